@@ -1,0 +1,173 @@
+#include <ccd/scene/scene_io.hpp>
+
+#include <ccd/io/atomic_file.hpp>
+#include <ccd/scene/input_error.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace ccd {
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+  const std::string& file;
+
+  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+    throw InputError(file, field, what);
+  }
+  const json& require(const json& obj, const char* key, const std::string& path) const {
+    auto it = obj.find(key);
+    if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "missing required field");
+    return *it;
+  }
+  double number(const json& v, const std::string& field) const {
+    if (!v.is_number()) fail(field, "must be a number");
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) fail(field, "must be finite");
+    return x;
+  }
+  Vec3 vec3(const json& v, const std::string& field) const {
+    if (!v.is_array() || v.size() != 3) fail(field, "must be an array of 3 numbers");
+    return {number(v[0], field + "[0]"), number(v[1], field + "[1]"), number(v[2], field + "[2]")};
+  }
+  Vec3 optional_vec3(const json& obj, const char* key, const std::string& path) const {
+    auto it = obj.find(key);
+    return it == obj.end() ? Vec3::Zero() : vec3(*it, path + "." + key);
+  }
+};
+
+std::string body_path(std::size_t i) { return "bodies[" + std::to_string(i) + "]"; }
+
+}  // namespace
+
+Scene scene_from_json(const json& j, const std::string& file) {
+  Reader r{file};
+  if (!j.is_object()) r.fail("", "a scene must be a JSON object");
+  const json& format = r.require(j, "format", "");
+  if (!format.is_string() || format.get<std::string>() != "ccdlab-scene/1")
+    r.fail("format", "must be \"ccdlab-scene/1\"");
+  Scene s;
+  s.horizon = r.number(r.require(j, "horizon", ""), "horizon");
+  s.gravity = r.optional_vec3(j, "gravity", "");
+  if (auto it = j.find("box"); it != j.end() && !it->is_null()) {
+    if (!it->is_object()) r.fail("box", "must be an object with min and max");
+    WallBox box;
+    box.min = r.vec3(r.require(*it, "min", "box"), "box.min");
+    box.max = r.vec3(r.require(*it, "max", "box"), "box.max");
+    s.box = box;
+  }
+  const json& bodies = r.require(j, "bodies", "");
+  if (!bodies.is_array()) r.fail("bodies", "must be an array");
+  s.bodies.reserve(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const json& b = bodies[i];
+    const std::string p = body_path(i);
+    if (!b.is_object()) r.fail(p, "must be an object");
+    Body body;
+    body.radius = r.number(r.require(b, "radius", p), p + ".radius");
+    body.position = r.vec3(r.require(b, "position", p), p + ".position");
+    body.velocity = r.optional_vec3(b, "velocity", p);
+    body.acceleration = r.optional_vec3(b, "acceleration", p);
+    if (auto it = b.find("acceleration_changes"); it != b.end()) {
+      const std::string cp = p + ".acceleration_changes";
+      if (!it->is_array()) r.fail(cp, "must be an array");
+      for (std::size_t k = 0; k < it->size(); ++k) {
+        const json& c = (*it)[k];
+        const std::string kp = cp + "[" + std::to_string(k) + "]";
+        if (!c.is_object()) r.fail(kp, "must be an object with t and acceleration");
+        AccelerationChange ch;
+        ch.t = r.number(r.require(c, "t", kp), kp + ".t");
+        ch.acceleration = r.vec3(r.require(c, "acceleration", kp), kp + ".acceleration");
+        body.acceleration_changes.push_back(ch);
+      }
+    }
+    s.bodies.push_back(std::move(body));
+  }
+  validate_scene(s, file);
+  return s;
+}
+
+void validate_scene(const Scene& s, const std::string& file) {
+  Reader r{file};
+  auto finite3 = [&](const Vec3& v, const std::string& f) {
+    if (!v.allFinite()) r.fail(f, "must be finite");
+  };
+  if (!std::isfinite(s.horizon) || s.horizon <= 0.0) r.fail("horizon", "must be > 0");
+  finite3(s.gravity, "gravity");
+  if (s.box) {
+    finite3(s.box->min, "box.min");
+    finite3(s.box->max, "box.max");
+    for (int a = 0; a < 3; ++a)
+      if (!(s.box->min[a] < s.box->max[a]))
+        r.fail("box", "min must be < max on every axis (axis " + std::to_string(a) + ")");
+  }
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const Body& b = s.bodies[i];
+    const std::string p = body_path(i);
+    if (!std::isfinite(b.radius) || b.radius <= 0.0) r.fail(p + ".radius", "must be > 0");
+    finite3(b.position, p + ".position");
+    finite3(b.velocity, p + ".velocity");
+    finite3(b.acceleration, p + ".acceleration");
+    if (s.box) {
+      for (int a = 0; a < 3; ++a) {
+        if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])
+          r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
+      }
+    }
+    double prev = 0.0;
+    for (std::size_t k = 0; k < b.acceleration_changes.size(); ++k) {
+      const AccelerationChange& c = b.acceleration_changes[k];
+      const std::string kp = p + ".acceleration_changes[" + std::to_string(k) + "]";
+      if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
+        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
+      finite3(c.acceleration, kp + ".acceleration");
+      prev = c.t;
+    }
+  }
+}
+
+json read_json_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  try {
+    return json::parse(ss.str());
+  } catch (const json::exception& e) {
+    throw InputError(path, "", std::string("malformed JSON: ") + e.what());
+  }
+}
+
+Scene load_scene(const std::string& path) { return scene_from_json(read_json_file(path), path); }
+
+json scene_to_json(const Scene& s) {
+  auto v = [](const Vec3& x) { return json::array({x.x(), x.y(), x.z()}); };
+  json j;
+  j["format"] = "ccdlab-scene/1";
+  j["horizon"] = s.horizon;
+  j["gravity"] = v(s.gravity);
+  if (s.box) j["box"] = {{"min", v(s.box->min)}, {"max", v(s.box->max)}};
+  json bodies = json::array();
+  for (const Body& b : s.bodies) {
+    json jb = {{"radius", b.radius}, {"position", v(b.position)}, {"velocity", v(b.velocity)},
+               {"acceleration", v(b.acceleration)}};
+    if (!b.acceleration_changes.empty()) {
+      json ch = json::array();
+      for (const AccelerationChange& c : b.acceleration_changes)
+        ch.push_back({{"t", c.t}, {"acceleration", v(c.acceleration)}});
+      jb["acceleration_changes"] = ch;
+    }
+    bodies.push_back(std::move(jb));
+  }
+  j["bodies"] = std::move(bodies);
+  return j;
+}
+
+void save_scene(const Scene& s, const std::string& path) {
+  write_file_atomically(path, scene_to_json(s).dump(1) + "\n");
+}
+
+}  // namespace ccd

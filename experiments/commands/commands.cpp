@@ -1,0 +1,21 @@
+#include "command.hpp"
+
+#include <algorithm>
+
+namespace ccdlab {
+
+// Each command's entry point and texts live in its own file.
+extern const Command kTruthCommand;
+
+std::span<const Command> commands() {
+  static const Command table[] = {kTruthCommand};
+  return table;
+}
+
+std::string version_string() { return std::string(CCDLAB_VERSION) + " (git " + CCDLAB_GIT_HASH + ")"; }
+
+bool wants_help(std::span<const std::string> args) {
+  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "-h" || a == "--help"; });
+}
+
+}  // namespace ccdlab

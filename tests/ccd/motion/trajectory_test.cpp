@@ -1,0 +1,98 @@
+#include <ccd/motion/trajectory.hpp>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
+
+using ccd::Vec3;
+
+namespace {
+
+ccd::Scene box_scene(double horizon) {
+  ccd::Scene s;
+  s.horizon = horizon;
+  s.box = ccd::WallBox{Vec3(0, 0, 0), Vec3(10, 10, 10)};
+  return s;
+}
+
+constexpr double eps = std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+TEST_CASE("linear motion without walls is one piece", "[motion]") {
+  ccd::Scene s;
+  s.horizon = 3.0;
+  s.bodies.push_back({1.0, Vec3(1, 2, 3), Vec3(1, -1, 0.5), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  REQUIRE(t.pieces(0).size() == 1);
+  CHECK(t.position(0, 2.0) == Vec3(3, 0, 4));
+}
+
+TEST_CASE("a body reflects exactly at the wall", "[motion]") {
+  // Centre starts at x = 5 moving at +2; radius 1, wall at x = 10, so the centre touches
+  // x = 9 at t = 2, comes back and reaches x = 1 at t = 6, and is at x = 3 at t = 7.
+  ccd::Scene s = box_scene(7.0);
+  s.bodies.push_back({1.0, Vec3(5, 5, 5), Vec3(2, 0, 0), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  const auto ps = t.pieces(0);
+  REQUIRE(ps.size() == 3);
+  CHECK(ps[0].t1 == Approx(2.0).epsilon(4 * eps));
+  CHECK(ps[1].t1 == Approx(6.0).epsilon(4 * eps));
+  CHECK(ps[1].p.x() == 9.0);  // placed exactly on the wall
+  CHECK(t.position(0, 7.0).x() == Approx(3.0).epsilon(8 * eps));
+  CHECK(t.velocity(0, 7.0).x() == 2.0);
+}
+
+TEST_CASE("an elastic ball under gravity bounces back to its release height", "[motion]") {
+  // Dropped from y = 5 (radius 1, floor contact at y = 1): falls 4 m in sqrt(8/9.81) s.
+  ccd::Scene s = box_scene(2.0);
+  s.gravity = Vec3(0, -9.81, 0);
+  s.bodies.push_back({1.0, Vec3(5, 5, 5), Vec3::Zero(), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  const double t_hit = std::sqrt(8.0 / 9.81);
+  REQUIRE(t.pieces(0).size() >= 2);
+  CHECK(t.pieces(0)[0].t1 == Approx(t_hit).epsilon(8 * eps));
+  CHECK(t.position(0, 2.0 * t_hit).y() == Approx(5.0).epsilon(1e-12));
+  CHECK(t.velocity(0, 2.0 * t_hit).y() == Approx(0.0).margin(1e-12));
+}
+
+TEST_CASE("a body at rest on the floor under gravity stays there", "[motion]") {
+  ccd::Scene s = box_scene(1.0);
+  s.gravity = Vec3(0, -9.81, 0);
+  s.bodies.push_back({0.5, Vec3(5, 0.5, 5), Vec3(1, 0, 0), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  CHECK(t.pieces(0).size() == 1);
+  CHECK(t.position(0, 1.0) == Vec3(6, 0.5, 5));
+}
+
+TEST_CASE("a body starting on a wall and moving into it reflects at once", "[motion]") {
+  ccd::Scene s = box_scene(1.0);
+  s.bodies.push_back({0.5, Vec3(0.5, 5, 5), Vec3(-1, 0, 0), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  CHECK(t.position(0, 1.0).x() == 1.5);
+}
+
+TEST_CASE("acceleration changes split the trajectory at the given times", "[motion]") {
+  ccd::Scene s;
+  s.horizon = 2.0;
+  ccd::Body b{1.0, Vec3::Zero(), Vec3::Zero(), Vec3(2, 0, 0), {{1.0, Vec3(-2, 0, 0)}}};
+  s.bodies.push_back(b);
+  const ccd::Trajectories t(s);
+  REQUIRE(t.pieces(0).size() == 2);
+  CHECK(t.pieces(0)[1].t0 == 1.0);
+  CHECK(t.position(0, 2.0).x() == Approx(2.0).epsilon(4 * eps));  // 1 + 2*1 - 1
+  CHECK(t.velocity(0, 2.0).x() == Approx(0.0).margin(4 * eps));
+  CHECK(s.motion_kind() == ccd::MotionKind::PiecewiseQuadratic);
+}
+
+TEST_CASE("swept bounds contain the path and the vertex of the parabola", "[motion]") {
+  ccd::Scene s;
+  s.horizon = 2.0;
+  s.gravity = Vec3(0, -10, 0);
+  s.bodies.push_back({0.5, Vec3(0, 0, 0), Vec3(1, 10, 0), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  const ccd::Aabb b = t.swept_bounds(0, 0.0, 2.0);
+  CHECK(b.hi.y() == Approx(5.5));  // apex y = 5 at t = 1, plus radius
+  CHECK(b.lo.y() == Approx(-0.5));
+  CHECK(b.hi.x() == Approx(2.5));
+}
