@@ -1,0 +1,57 @@
+// `ccdlab methods [--names]`: the bounds, the broad phases, and how they compose.
+#include "command.hpp"
+
+#include "../method.hpp"
+
+#include <iomanip>
+#include <iostream>
+
+namespace ccdlab {
+namespace {
+
+const char* knowledge(ccd::Knowledge k) {
+  switch (k) {
+    case ccd::Knowledge::Instant: return "instant";
+    case ccd::Knowledge::Exact: return "exact";
+    case ccd::Knowledge::Bounded: return "bounded";
+  }
+  return "?";
+}
+
+int run_methods(std::span<const std::string> args) {
+  if (!args.empty() && args[0] == "--names") {
+    for (const std::string& m : all_method_names()) std::cout << m << "\n";
+    return 0;
+  }
+  if (!args.empty()) {
+    std::cerr << "ccdlab methods: unexpected argument '" << args[0] << "' (see ccdlab methods --help)\n";
+    return kExitBadInput;
+  }
+  std::cout << "A method is BOUND/BROADPHASE, e.g. aabb/sap, capsule/grid, horn:4/sap.\n\nBounds:\n";
+  std::cout << "  " << std::left << std::setw(18) << "name" << std::setw(9) << "knows" << std::setw(14)
+            << "conservative" << "description\n";
+  for (const ccd::BoundInfo& b : ccd::bound_registry()) {
+    std::string name(b.name);
+    if (b.parameterised) name += ":M";
+    std::cout << "  " << std::setw(18) << name << std::setw(9) << knowledge(b.knowledge) << std::setw(14)
+              << (b.knowledge == ccd::Knowledge::Instant ? "at samples" : b.conservative ? "yes" : "no")
+              << b.description << "\n";
+  }
+  std::cout << "\nBroad phases:\n";
+  for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry())
+    std::cout << "  " << std::setw(18) << p.name << p.description << "\n";
+  std::cout << "\n" << all_method_names().size() << " methods with default parameters (ccdlab methods --names).\n";
+  return 0;
+}
+
+}  // namespace
+
+extern const Command kMethodsCommand = {
+    "methods", "list the bounds and broad phases that compose methods BOUND/BROADPHASE",
+    "usage: ccdlab methods [--names]\n"
+    "\n"
+    "Lists every bound (with what it may know and whether it is conservative) and every\n"
+    "broad phase. --names prints every composed method name, one per line.\n",
+    run_methods};
+
+}  // namespace ccdlab

@@ -1,0 +1,36 @@
+#pragma once
+// An experiment: one scene, a list of timesteps, a list of methods (`ccdlab-experiment/1`,
+// documented in docs/experiments.md). Parsing fills in every default, so the results
+// file records exactly what ran.
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace ccdlab {
+
+struct Experiment {
+  std::string name;
+  /// Either a scene file path (resolved against the experiment file's folder) ...
+  std::string scene_path;
+  /// ... or a generator spec {"generator": NAME, params...} (scene_path empty).
+  nlohmann::json scene_generator;
+  std::vector<double> dt;             ///< sorted descending, unique, each in (0, horizon]
+  std::vector<std::string> methods;   ///< BOUND/BROADPHASE, validated against the registries
+  double acceleration_bound = -1.0;   ///< A for Bounded bounds; < 0: the scene's largest
+  int repeats = 1;                    ///< timing repeats (counts must not change)
+  nlohmann::json source;              ///< the parsed file with defaults filled in
+};
+
+/// Parses and validates an experiment (methods, dt > 0, repeats >= 1, ...); throws
+/// ccd::InputError naming `file` and the field. The dt <= horizon check needs the scene:
+/// see check_dt_against_horizon.
+Experiment experiment_from_json(const nlohmann::json& j, const std::string& file);
+/// Reads an experiment file; a relative scene path is resolved against its folder.
+Experiment load_experiment(const std::string& path);
+/// Throws ccd::InputError if some dt exceeds the horizon.
+void check_dt_against_horizon(const Experiment& e, double horizon, const std::string& file);
+/// The JSON form with defaults filled in (what the results file records).
+nlohmann::json experiment_to_json(const Experiment& e);
+
+}  // namespace ccdlab

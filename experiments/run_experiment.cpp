@@ -1,0 +1,190 @@
+#include "run_experiment.hpp"
+
+#include "environment.hpp"
+#include "generators/registry.hpp"
+#include "progress.hpp"
+#include "runner.hpp"
+
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_io.hpp>
+#include <ccd/truth/ground_truth.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace ccdlab {
+
+using nlohmann::json;
+
+ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
+  if (!e.scene_path.empty()) return ccd::load_scene(e.scene_path);
+  json params = e.scene_generator;
+  const std::string name = params["generator"].get<std::string>();
+  params.erase("generator");
+  try {
+    return generate_scene(name, params);
+  } catch (const std::invalid_argument& err) {
+    throw ccd::InputError(file, "scene", err.what());
+  }
+}
+
+namespace {
+
+json scene_summary(const Experiment& e, const ccd::Scene& s, const ccd::Trajectories& traj) {
+  double rmin = 0, rmax = 0;
+  if (!s.bodies.empty()) {
+    rmin = rmax = s.bodies[0].radius;
+    for (const ccd::Body& b : s.bodies) {
+      rmin = std::min(rmin, b.radius);
+      rmax = std::max(rmax, b.radius);
+    }
+  }
+  json j = {{"source", e.scene_path.empty() ? json(e.scene_generator) : json(e.scene_path)},
+            {"bodies", s.bodies.size()},
+            {"horizon", s.horizon},
+            {"motion", ccd::to_string(s.motion_kind())},
+            {"gravity", {s.gravity.x(), s.gravity.y(), s.gravity.z()}},
+            {"radius_min", rmin},
+            {"radius_max", rmax},
+            {"max_acceleration", s.max_acceleration()},
+            {"trajectory_pieces", traj.total_pieces()}};
+  if (s.box)
+    j["box"] = {{"min", {s.box->min.x(), s.box->min.y(), s.box->min.z()}},
+                {"max", {s.box->max.x(), s.box->max.y(), s.box->max.z()}}};
+  return j;
+}
+
+std::string job_label(const std::string& method, double dt) {
+  std::ostringstream os;
+  os << method << " dt=" << dt;
+  return os.str();
+}
+
+}  // namespace
+
+json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options) {
+  struct Job {
+    std::size_t index;
+    MethodSpec method;
+    double dt;
+  };
+  std::vector<Job> jobs;
+  const std::size_t total_jobs = e.methods.size() * e.dt.size();
+  for (std::size_t m = 0; m < e.methods.size(); ++m)
+    for (std::size_t d = 0; d < e.dt.size(); ++d) {
+      const std::size_t index = m * e.dt.size() + d;
+      if (options.shard.owns(index)) jobs.push_back({index, parse_method(e.methods[m]), e.dt[d]});
+    }
+
+  Progress progress(jobs.size(), options.quiet);
+  progress.phase("scene: " + std::to_string(scene.bodies.size()) + " bodies, horizon " +
+                 std::to_string(scene.horizon) + " s; computing exact ground truth");
+  const auto t0 = std::chrono::steady_clock::now();
+  const ccd::Trajectories traj(scene);
+  ccd::TruthOptions topts;
+  topts.threads = options.threads;
+  const TruthIndex truth(ccd::compute_truth(traj, topts));
+  const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::size_t tangent = 0;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const ccd::ContactEvent& ev : truth.events()) {
+    tangent += ev.enter == ev.exit;
+    pairs.insert({ev.a, ev.b});
+  }
+  progress.phase("ground truth: " + std::to_string(truth.events().size()) + " events in " +
+                 std::to_string(truth_seconds) + " s; running " + std::to_string(jobs.size()) + " jobs");
+
+  RunInput in;
+  in.scene = &scene;
+  in.trajectories = &traj;
+  in.truth = &truth;
+  in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
+  in.repeats = e.repeats;
+  in.cancel = options.cancel;
+
+  std::vector<RunRecord> records(jobs.size());
+  std::atomic<std::size_t> next{0};
+  auto worker = [&] {
+    for (std::size_t i; (i = next.fetch_add(1)) < jobs.size();) {
+      if (options.cancel && options.cancel->load()) return;
+      records[i] = run_method(in, jobs[i].method, jobs[i].dt);
+      progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+    }
+  };
+  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(jobs.size())));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  progress.finish();
+  if (options.cancel && options.cancel->load()) return json();
+  for (const RunRecord& r : records)
+    if (r.cancelled) return json();
+
+  json out;
+  out["format"] = "ccdlab-results/1";
+  out["experiment"] = experiment_to_json(e);
+  out["experiment"]["acceleration_bound_used"] = in.acceleration_bound;
+  out["scene"] = scene_summary(e, scene, traj);
+  out["truth"] = {{"events", truth.events().size()},
+                  {"tangent_events", tangent},
+                  {"pairs", pairs.size()},
+                  {"seconds", truth_seconds}};
+  out["environment"] = environment_json(options.threads);
+  out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
+  json recs = json::array();
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    json r = to_json(records[i]);
+    r["job"] = jobs[i].index;
+    recs.push_back(std::move(r));
+  }
+  out["records"] = std::move(recs);
+  out["peak_memory_bytes"] = peak_memory_bytes();
+  return out;
+}
+
+json merge_results(const std::vector<json>& shards) {
+  if (shards.empty()) throw std::runtime_error("no results to merge");
+  const json& first = shards.front();
+  std::map<std::size_t, json> by_job;
+  std::set<int> seen_shards;
+  const std::size_t total = first["shard"]["jobs"].get<std::size_t>();
+  for (std::size_t s = 0; s < shards.size(); ++s) {
+    const json& r = shards[s];
+    const std::string which = "input " + std::to_string(s + 1);
+    if (r.value("format", "") != "ccdlab-results/1") throw std::runtime_error(which + ": not a ccdlab-results/1 file");
+    if (r["experiment"] != first["experiment"])
+      throw std::runtime_error(which + ": a different experiment than input 1");
+    if (r["truth"]["events"] != first["truth"]["events"] || r["scene"]["bodies"] != first["scene"]["bodies"])
+      throw std::runtime_error(which + ": a different scene or ground truth than input 1");
+    if (r["shard"]["count"] != first["shard"]["count"])
+      throw std::runtime_error(which + ": sharded " + r["shard"]["count"].dump() + " ways, input 1 " +
+                               first["shard"]["count"].dump() + " ways");
+    if (!seen_shards.insert(r["shard"]["index"].get<int>()).second)
+      throw std::runtime_error(which + ": shard " + r["shard"]["index"].dump() + " given twice");
+    for (const json& rec : r["records"]) {
+      const std::size_t job = rec["job"].get<std::size_t>();
+      if (!by_job.emplace(job, rec).second) throw std::runtime_error(which + ": job " + std::to_string(job) + " twice");
+    }
+  }
+  if (by_job.size() != total)
+    throw std::runtime_error("merged " + std::to_string(by_job.size()) + " of " + std::to_string(total) +
+                             " jobs: a shard is missing");
+  json out = first;
+  out["shard"] = {{"index", 1}, {"count", 1}, {"jobs", total}, {"merged_from", shards.size()}};
+  json recs = json::array();
+  long long peak = 0;
+  for (const json& r : shards) peak = std::max(peak, r["peak_memory_bytes"].get<long long>());
+  for (auto& [job, rec] : by_job) recs.push_back(rec);
+  out["records"] = std::move(recs);
+  out["peak_memory_bytes"] = peak;
+  return out;
+}
+
+}  // namespace ccdlab

@@ -1,0 +1,70 @@
+#pragma once
+// Runs one method at one timestep over a scene and measures it against exact ground
+// truth (definitions in docs/experiments.md):
+//  - samples t_k = k * dt (a product, never accumulated), k = 0 .. floor(T / dt);
+//  - a discrete method (an Instant bound) checks overlap at each sample: an event is
+//    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
+//  - a continuous method checks each step [t_k, t_{k+1}] (and the last partial step): an
+//    event is detected when the pair is confirmed by the exact narrow phase in a step
+//    that contains its enter time.
+#include "method.hpp"
+#include "truth_index.hpp"
+
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/scene/scene.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace ccdlab {
+
+struct RunInput {
+  const ccd::Scene* scene = nullptr;
+  const ccd::Trajectories* trajectories = nullptr;
+  const TruthIndex* truth = nullptr;
+  double acceleration_bound = 0.0;          ///< A given to Bounded bounds
+  int repeats = 1;                          ///< timing repeats; times are medians
+  const std::atomic<bool>* cancel = nullptr;  ///< checked once per step
+};
+
+struct RunRecord {
+  std::string method;
+  std::string bound;
+  std::string broad_phase;
+  std::string knowledge;       ///< instant | exact | bounded
+  bool continuous = false;
+  bool conservative = false;   ///< the bound's claim under its knowledge
+  double dt = 0.0;
+  std::uint64_t steps = 0;     ///< samples (discrete) or steps (continuous)
+  std::uint64_t events = 0;    ///< ground-truth events
+  std::uint64_t detected = 0;
+  std::uint64_t missed = 0;
+  std::uint64_t candidates = 0;        ///< pairs reported by the broad phase, summed over steps
+  std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
+  std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
+  std::uint64_t false_positives = 0;   ///< bound candidates with no contact at the sample/in the step
+  double max_penetration = 0.0;        ///< largest r_a + r_b - |d| at first detection
+  double mean_penetration = 0.0;
+  double mean_lag = 0.0;               ///< mean detection time - enter over detected events
+  double max_lag = 0.0;
+  double bound_seconds = 0.0;          ///< bound prepare + bound pair tests (median of repeats)
+  double broad_seconds = 0.0;          ///< broad phase (median of repeats)
+  double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
+  double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
+  double seconds_per_simulated_second = 0.0;
+  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap only)
+  std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
+  std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
+  bool counts_stable = true;           ///< identical counts over all repeats
+  bool cancelled = false;
+};
+
+/// Runs `method` at timestep `dt`. Never throws for a valid input; a cancelled run
+/// returns with `cancelled` set.
+RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt);
+
+nlohmann::json to_json(const RunRecord& r);
+
+}  // namespace ccdlab
