@@ -1,0 +1,175 @@
+#!/usr/bin/python3
+"""Charts of a ccdlab results file (ccdlab-results/1), as PNG and SVG.
+
+usage: /usr/bin/python3 scripts/plot.py RESULTS.json [-o DIR] [--format png,svg]
+
+Draws, into DIR (default: RESULTS without .json, plus "-plots"):
+  missed.{png,svg}        missed fraction against dt, one line per method
+  false_positives.*       false positives per step against dt
+  cost.*                  seconds per simulated second against dt
+  speed_accuracy.*        cost against missed fraction, every (method, dt) a point,
+                          the Pareto front drawn, zero-miss methods marked
+  penetration.*           penetration depth at detection against dt (discrete methods)
+and prints each path. Needs Debian's python3-matplotlib (run with /usr/bin/python3).
+Reads results only; exits with status 2 on a file that is not a results file.
+"""
+import argparse
+import json
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+CHARTS = ("missed", "false_positives", "cost", "speed_accuracy", "penetration")
+MARKERS = "osD^v<>pP*Xh"
+
+
+def fail(msg):
+    print(f"plot.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            res = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        fail(f"{path}: {e}")
+    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/1":
+        fail(f"{path}: format: not a ccdlab-results/1 file")
+    for i, r in enumerate(res.get("records", [])):
+        for k in ("method", "dt", "missed_fraction", "false_positives_per_step",
+                  "seconds_per_simulated_second", "continuous", "max_penetration"):
+            if k not in r:
+                fail(f"{path}: records[{i}].{k}: missing field")
+    if not res.get("records"):
+        fail(f"{path}: records: no records to plot")
+    return res
+
+
+def by_method(records):
+    out = {}
+    for r in records:
+        out.setdefault(r["method"], []).append(r)
+    for rs in out.values():
+        rs.sort(key=lambda r: r["dt"])
+    return out
+
+
+def style(i):
+    cmap = plt.get_cmap("tab20" if i >= 10 else "tab10")
+    return dict(color=cmap(i % cmap.N), marker=MARKERS[i % len(MARKERS)])
+
+
+def title(res):
+    s = res["scene"]
+    t = res["truth"]
+    name = res["experiment"].get("name", "experiment")
+    return (f"{name}: {s['bodies']} bodies, {s['motion'].replace('_', ' ')} motion, "
+            f"horizon {s['horizon']:g} s, {t['events']} contact events")
+
+
+def finish(fig, ax, res, outdir, stem, formats, legend=True):
+    ax.set_title(title(res), fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    if legend:
+        ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False,
+                  ncol=1 if len(ax.get_legend_handles_labels()[0]) <= 18 else 2)
+    fig.tight_layout()
+    paths = []
+    for fmt in formats:
+        p = os.path.join(outdir, f"{stem}.{fmt}")
+        fig.savefig(p, dpi=130)
+        paths.append(p)
+    plt.close(fig)
+    return paths
+
+
+def line_chart(res, outdir, formats, stem, key, ylabel, methods=None, yscale="symlog"):
+    fig, ax = plt.subplots(figsize=(10, 5.5))
+    groups = by_method(res["records"])
+    names = list(groups)
+    for i, name in enumerate(names):
+        if methods is not None and name not in methods:
+            continue
+        rs = groups[name]
+        ax.plot([r["dt"] for r in rs], [key(r) for r in rs], label=name, linewidth=1.4,
+                markersize=4, **style(i))
+    ax.set_xscale("log")
+    if yscale == "symlog":
+        ys = [key(r) for r in res["records"] if key(r) > 0]
+        ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
+    else:
+        ax.set_yscale(yscale)
+    ax.set_xlabel("timestep dt (s)")
+    ax.set_ylabel(ylabel)
+    return finish(fig, ax, res, outdir, stem, formats)
+
+
+def pareto(points):
+    """Points (cost, missed) not dominated by another (lower or equal on both, lower on one)."""
+    front = []
+    for p in sorted(points):
+        if not front or p[1] < front[-1][1]:
+            front.append(p)
+    return front
+
+
+def speed_accuracy(res, outdir, formats):
+    fig, ax = plt.subplots(figsize=(10, 5.5))
+    groups = by_method(res["records"])
+    pts = []
+    for i, (name, rs) in enumerate(groups.items()):
+        zero = all(r["missed"] == 0 for r in rs)
+        st = style(i)
+        xs = [r["seconds_per_simulated_second"] for r in rs]
+        ys = [r["missed_fraction"] for r in rs]
+        pts += list(zip(xs, ys))
+        ax.scatter(xs, ys, s=55 if zero else 22, color=st["color"], marker="*" if zero else st["marker"],
+                   edgecolors="black" if zero else "none", linewidths=0.6,
+                   label=name + (" (zero misses)" if zero else ""), zorder=3)
+    front = pareto(pts)
+    ax.plot([p[0] for p in front], [p[1] for p in front], color="black", linewidth=1.0,
+            linestyle="--", label="Pareto front", zorder=2)
+    ax.set_xscale("log")
+    ys = [p[1] for p in pts if p[1] > 0]
+    ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
+    ax.set_xlabel("cost (seconds of computation per simulated second)")
+    ax.set_ylabel("missed fraction of contact events")
+    return finish(fig, ax, res, outdir, "speed_accuracy", formats)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="Charts of a ccdlab results file (PNG and SVG).")
+    ap.add_argument("results", help="a ccdlab-results/1 file written by `ccdlab run`")
+    ap.add_argument("-o", "--output", help="output folder (default: RESULTS-plots next to the file)")
+    ap.add_argument("--format", default="png,svg", help="comma-separated formats (default png,svg)")
+    args = ap.parse_args(argv)
+    res = load(args.results)
+    outdir = args.output or os.path.splitext(args.results)[0] + "-plots"
+    formats = [f for f in args.format.split(",") if f]
+    for f in formats:
+        if f not in ("png", "svg", "pdf"):
+            fail(f"--format: unknown format '{f}' (png, svg, pdf)")
+    os.makedirs(outdir, exist_ok=True)
+    paths = []
+    paths += line_chart(res, outdir, formats, "missed", lambda r: r["missed_fraction"],
+                        "missed fraction of contact events")
+    paths += line_chart(res, outdir, formats, "false_positives", lambda r: r["false_positives_per_step"],
+                        "false positives per step")
+    paths += line_chart(res, outdir, formats, "cost", lambda r: r["seconds_per_simulated_second"],
+                        "cost (s per simulated s)", yscale="log")
+    paths += speed_accuracy(res, outdir, formats)
+    discrete = {r["method"] for r in res["records"] if not r["continuous"]}
+    if discrete:
+        paths += line_chart(res, outdir, formats, "penetration", lambda r: r["max_penetration"],
+                            "largest penetration depth at detection", methods=discrete)
+    for p in paths:
+        print(p)
+
+
+if __name__ == "__main__":
+    main()
