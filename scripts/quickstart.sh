@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Quick-start command 1: install what is missing, build, run the default experiment and
-# print where its results are.
+# Quick-start command 1: install what is missing, build, run the default experiment,
+# draw its charts, and print where the results and charts are.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
+echo "ccdlab: building (Release) ..." >&2
 "$root/scripts/build.sh" >/dev/null
 build=${CCDLAB_BUILD_DIR:-$root/build}
 mkdir -p "$root/results"
-"$build/ccdlab" truth "$root/data/scenes/default.json" -o "$root/results/default-truth.json"
+"$build/ccdlab" run "$root/data/experiments/default.json" -o "$root/results/default.json"
+echo "charts:"
+/usr/bin/python3 "$root/scripts/plot.py" "$root/results/default.json" -o "$root/results/default-plots"

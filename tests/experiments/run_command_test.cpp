@@ -1,0 +1,131 @@
+// `ccdlab run` and `ccdlab merge` end to end: bad input, thread-count independence,
+// shards that merge into the whole run.
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct TempDir {
+  fs::path path;
+  TempDir() {
+    std::string tmpl = (fs::temp_directory_path() / "ccdlab-run-test-XXXXXX").string();
+    path = ::mkdtemp(tmpl.data());
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string write(const std::string& name, const json& j) const {
+    const fs::path p = path / name;
+    std::ofstream(p) << j.dump();
+    return p.string();
+  }
+};
+
+// Runs the ccdlab binary with `args`; returns the exit status, stderr in `err`.
+int ccdlab(const std::string& args, std::string* err = nullptr, const TempDir* dir = nullptr) {
+  const std::string errfile = dir ? (dir->path / "stderr.txt").string() : "/dev/null";
+  const int rc = std::system((std::string(CCDLAB_BINARY) + " " + args + " >/dev/null 2>" + errfile).c_str());
+  if (err && dir) {
+    std::ifstream in(errfile);
+    err->assign(std::istreambuf_iterator<char>(in), {});
+  }
+  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+}
+
+json small_experiment() {
+  return {{"format", "ccdlab-experiment/1"},
+          {"name", "small"},
+          {"scene", {{"generator", "gas"}, {"bodies", 150}, {"seed", 3}, {"horizon", 0.5}}},
+          {"dt", {0.1, 0.02, 0.005}},
+          {"methods", {"aabb/sap", "sphere/grid", "capsule/sap", "horn:2/brute"}}};
+}
+
+json read(const std::string& path) {
+  std::ifstream in(path);
+  return json::parse(in);
+}
+
+}  // namespace
+
+TEST_CASE("ccdlab run rejects bad experiments with exit 2 and writes nothing", "[run][cli]") {
+  const TempDir dir;
+  const std::string out = (dir.path / "out.json").string();
+  json e = small_experiment();
+  std::string err;
+  SECTION("unknown method: the valid ones are listed") {
+    e["methods"] = {"aabb/sap", "aabb/octree"};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("methods[1]") != std::string::npos);
+    CHECK(err.find("sap") != std::string::npos);  // the list of valid broad phases
+  }
+  SECTION("dt <= 0") {
+    e["dt"] = {0.1, 0.0};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("dt[1]") != std::string::npos);
+  }
+  SECTION("dt larger than the horizon") {
+    e["dt"] = {1.0};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("horizon") != std::string::npos);
+  }
+  SECTION("empty method list") {
+    e["methods"] = json::array();
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("methods") != std::string::npos);
+  }
+  SECTION("unreadable scene file") {
+    e["scene"] = "no-such-scene.json";
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("no-such-scene.json") != std::string::npos);
+  }
+  SECTION("unknown generator") {
+    e["scene"] = {{"generator", "plasma"}};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("gas") != std::string::npos);
+  }
+  SECTION("malformed JSON") {
+    std::ofstream(dir.path / "bad.json") << "{\"format\": ";
+    CHECK(ccdlab("run " + (dir.path / "bad.json").string() + " -o " + out, &err, &dir) == 2);
+  }
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("counts do not depend on the thread count; shards merge into the whole run", "[run][cli]") {
+  const TempDir dir;
+  const std::string e = dir.write("e.json", small_experiment());
+  const std::string one = (dir.path / "one.json").string(), two = (dir.path / "two.json").string();
+  REQUIRE(ccdlab("run " + e + " --quiet --threads 1 -o " + one) == 0);
+  REQUIRE(ccdlab("run " + e + " --quiet --threads 2 -o " + two) == 0);
+  const json a = read(one), b = read(two);
+  REQUIRE(a["records"].size() == 12);
+  const char* counts[] = {"steps", "events", "detected", "missed", "candidates", "bound_candidates",
+                          "confirmed", "false_positives", "max_penetration", "mean_lag"};
+  for (std::size_t i = 0; i < a["records"].size(); ++i) {
+    for (const char* k : counts) CHECK(a["records"][i][k] == b["records"][i][k]);
+    CHECK(a["records"][i]["self_check"]["ok"] == true);
+    if (a["records"][i]["continuous"].get<bool>()) CHECK(a["records"][i]["missed"] == 0);
+  }
+  SECTION("three shards, merged") {
+    std::string shards;
+    for (int k = 1; k <= 3; ++k) {
+      const std::string s = (dir.path / ("s" + std::to_string(k) + ".json")).string();
+      REQUIRE(ccdlab("run " + e + " --quiet --threads 1 --shard " + std::to_string(k) + "/3 -o " + s) == 0);
+      shards += " " + s;
+    }
+    const std::string merged = (dir.path / "merged.json").string();
+    REQUIRE(ccdlab("merge" + shards + " -o " + merged) == 0);
+    const json m = read(merged);
+    REQUIRE(m["records"].size() == a["records"].size());
+    for (std::size_t i = 0; i < a["records"].size(); ++i)
+      for (const char* k : counts) CHECK(m["records"][i][k] == a["records"][i][k]);
+    // A missing shard is an error.
+    CHECK(ccdlab("merge " + (dir.path / "s1.json").string() + " -o " + (dir.path / "bad.json").string()) == 2);
+    CHECK_FALSE(fs::exists(dir.path / "bad.json"));
+  }
+}
