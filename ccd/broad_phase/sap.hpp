@@ -42,15 +42,12 @@ class SweepAndPrune final : public BroadPhase {
   void rebuild(std::span<const Aabb> boxes);
   bool insertion_sort(std::uint64_t budget);
 
-  struct Cross {  // the two other axes, in sweep order
-    double lo1, hi1, lo2, hi2;
-  };
   SapOptions options_;
   int axis_ = 0;
   std::vector<std::uint32_t> order_;  // body ids sorted by start
   std::vector<double> start_;         // lo on the sweep axis, in order
   std::vector<double> end_;           // hi on the sweep axis, in order
-  std::vector<Cross> cross_;          // other axes, in order
+  std::vector<double> lo1_, hi1_, lo2_, hi2_;  // the two other axes, in order
   BroadPhaseStats stats_;
 };
 
