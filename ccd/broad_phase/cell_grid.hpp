@@ -17,7 +17,7 @@
 // of (lo - o) / s (relative error < 2^-50 on indices below 2^20).
 //
 // Pairs. Per level, bodies are sorted by (key, body) with an LSD radix sort on the key bits
-// in use and copied in that order next to their boxes (one 56-byte record per body).
+// in use and copied in that order (48-byte boxes; ids apart, read only on hits).
 // Same level: each cell against itself and the 13 neighbours of a half stencil
 // (+x; the 3 cells of row y+1; the 9 cells of plane z+1), found with 4 monotone cursors
 // over the sorted cell keys (one per stencil row), so every unordered pair of cells is met
@@ -66,7 +66,6 @@ class CellGrid {
   struct Item {
     double lo[3];
     double hi[3];
-    std::uint32_t id;
   };
 
  private:
@@ -85,7 +84,8 @@ class CellGrid {
   std::vector<Level> levels_;
   std::vector<std::uint64_t> packed_, tmp_;  // (key << 32) | body, sorted per level
   std::vector<std::uint64_t> query_;         // cross-level queries: (coarse key << 32) | item
-  std::vector<Item> items_;                  // boxes in sorted order
+  std::vector<Item> items_;                  // boxes in sorted order (48 bytes each)
+  std::vector<std::uint32_t> ids_;           // their body ids
   std::vector<std::uint32_t> cell_key_;      // per cell, levels one after another
   std::vector<std::uint32_t> cell_start_;    // first item of each cell, + sentinel
 };
