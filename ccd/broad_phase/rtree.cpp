@@ -1,5 +1,7 @@
 #include <ccd/broad_phase/rtree.hpp>
 
+// Boost 1.74 Geometry includes a deprecated Boost header that prints a #pragma message.
+#define BOOST_ALLOW_DEPRECATED_HEADERS
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>

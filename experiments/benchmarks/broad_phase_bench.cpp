@@ -9,6 +9,9 @@
 //
 //   broad_phase_bench [--sizes=1000,10000,100000,1000000] [--slow] [benchmark flags]
 //
+// A second family, mixed_sizes/METHOD/100000, times a static scene whose sizes span three
+// orders of magnitude (the case for `hgrid`).
+//
 // Without --slow, combinations that are quadratic in practice are not registered:
 // brute above 10,000 bodies, sap above 100,000 (a one-axis sweep meets ~n^2 / L * 4
 // x-overlaps: 3e9 at 1e6) and rtree at 1,000,000 (about 1.5 s per frame).
@@ -18,8 +21,13 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -43,6 +51,37 @@ void run(benchmark::State& state, const ccd::BroadPhaseInfo* info, std::size_t n
     state.counters["rebuilds"] = r.rebuilds;
     state.counters["min_ms"] = r.min_ms;
     state.counters["wall_ms"] = r.median_wall_ms;
+  }
+}
+
+// Sizes over three orders of magnitude: 99% of the spheres with radius log-uniform in
+// [0.005, 0.05], 1% with radius 5, uniformly in [0, 100]^3 (seed 7), static. `grid` sizes
+// its cells for the radius-5 spheres (about 100 small ones per cell); `hgrid` puts the small
+// ones on fine levels. Same protocol (2 warm-up + 20 frames, median CPU ms).
+void run_mixed(benchmark::State& state, const ccd::BroadPhaseInfo* info, std::size_t n) {
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> pos(0, 100), lg(std::log(0.005), std::log(0.05)), u(0, 1);
+  std::vector<ccd::Aabb> boxes;
+  for (std::size_t i = 0; i < n; ++i) {
+    const ccd::Vec3 c(pos(gen), pos(gen), pos(gen));
+    const double r = u(gen) < 0.01 ? 5.0 : std::exp(lg(gen));
+    boxes.push_back(ccd::Aabb::around(c, r));
+  }
+  for (auto _ : state) {
+    auto method = info->make();
+    std::vector<ccd::BodyPair> pairs;
+    std::vector<double> ms;
+    for (int f = 0; f < 22; ++f) {
+      timespec a{}, b{};
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
+      method->find_pairs(boxes, pairs);
+      clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
+      if (f >= 2) ms.push_back(static_cast<double>(b.tv_sec - a.tv_sec) * 1e3 + static_cast<double>(b.tv_nsec - a.tv_nsec) * 1e-6);
+    }
+    std::sort(ms.begin(), ms.end());
+    state.SetIterationTime(0.5 * (ms[9] + ms[10]) * 1e-3);
+    state.counters["pairs/frame"] = static_cast<double>(pairs.size());
+    state.counters["box_tests"] = static_cast<double>(method->stats().box_tests);
   }
 }
 
@@ -88,6 +127,14 @@ int main(int argc, char** argv) {
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);
     }
+  for (const ccd::BroadPhaseInfo& info : ccd::broad_phase_registry()) {
+    if (info.name == "brute") continue;
+    const std::string name = "mixed_sizes/" + std::string(info.name) + "/100000";
+    benchmark::RegisterBenchmark(name.c_str(), run_mixed, &info, std::size_t{100000})
+        ->Iterations(1)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+  }
   int rest_argc = static_cast<int>(rest.size());
   benchmark::Initialize(&rest_argc, rest.data());
   benchmark::RunSpecifiedBenchmarks();
