@@ -1,0 +1,243 @@
+#include <ccd/broad_phase/cell_grid.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace ccd::detail {
+
+namespace {
+
+// LSD radix sort of v[0, n) by bits [32, 32 + bits) (the cell key above the body id), with
+// digits of at most 11 bits (histograms stay in L1). Stable, so bodies keep index order
+// within a cell. Skipped when already sorted (coherent frames often are).
+void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<std::uint64_t>& tmp) {
+  if (n < 2 || bits <= 0) return;
+  bool sorted = true;
+  for (std::size_t i = 1; i < n && sorted; ++i) sorted = (v[i - 1] >> 32) <= (v[i] >> 32);
+  if (sorted) return;
+  if (n <= 64) {
+    std::stable_sort(v, v + n, [](std::uint64_t a, std::uint64_t b) { return (a >> 32) < (b >> 32); });
+    return;
+  }
+  if (tmp.size() < n) tmp.resize(n);
+  const int passes = (bits + 10) / 11;
+  const int width = (bits + passes - 1) / passes;
+  const std::uint64_t mask = (std::uint64_t{1} << width) - 1;
+  std::array<std::uint32_t, 2048> count;  // 2^11 digits at most
+  std::uint64_t* src = v;
+  std::uint64_t* dst = tmp.data();
+  for (int p = 0; p < passes; ++p) {
+    const int shift = 32 + p * width;
+    std::fill(count.begin(), count.begin() + (mask + 1), 0u);
+    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & mask];
+    std::uint32_t sum = 0;
+    for (std::uint64_t d = 0; d <= mask; ++d) {
+      const std::uint32_t k = count[d];
+      count[d] = sum;
+      sum += k;
+    }
+    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & mask]++] = src[i];
+    std::swap(src, dst);
+  }
+  if (src != v) std::copy(src, src + n, v);
+}
+
+inline bool overlap(const CellGrid::Item& a, const CellGrid::Item& b) {
+  return (a.lo[0] <= b.hi[0]) & (b.lo[0] <= a.hi[0]) & (a.lo[1] <= b.hi[1]) & (b.lo[1] <= a.hi[1]) &
+         (a.lo[2] <= b.hi[2]) & (b.lo[2] <= a.hi[2]);
+}
+
+inline void emit(const std::uint32_t* ids, std::uint32_t i, std::uint32_t j, std::vector<BodyPair>& out) {
+  const std::uint32_t a = ids[i], b = ids[j];
+  out.push_back(a < b ? BodyPair{a, b} : BodyPair{b, a});
+}
+
+}  // namespace
+
+std::uint64_t CellShape::cells() const {
+  const double c = static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz);
+  return c > 0x1p40 ? (std::uint64_t{1} << 40) : nx * ny * nz;
+}
+
+CellShape cell_shape(double cell, const std::array<double, 3>& span) {
+  const double inv = 1.0 / cell;
+  auto count = [&](double s) {
+    const double c = std::floor(s * inv);
+    return c > 0x1p40 ? (std::uint64_t{1} << 40) : static_cast<std::uint64_t>(c);
+  };
+  CellShape sh;
+  sh.nx = std::max<std::uint64_t>(count(span[0]) + 2, 3);
+  sh.ny = std::max<std::uint64_t>(count(span[1]) + 2, 3);
+  sh.nz = count(span[2]) + 1;
+  return sh;
+}
+
+double admissible_cell(double wanted, const std::array<double, 3>& span) {
+  const double widest = std::max({span[0], span[1], span[2]});
+  double s = std::max(wanted, widest / kMaxCellsPerAxis);
+  if (!(s > 0)) return 1.0;
+  s = std::max(s, 4 * std::numeric_limits<double>::min());
+  while (cell_shape(s, span).cells() > kMaxCellsPerLevel) s *= 2;
+  return s;
+}
+
+std::uint64_t CellGrid::key_of(const Level& lv, const double lo[3]) const {
+  const auto ix = static_cast<std::uint64_t>((lo[0] - origin_[0]) * lv.inv);
+  const auto iy = static_cast<std::uint64_t>((lo[1] - origin_[1]) * lv.inv);
+  const auto iz = static_cast<std::uint64_t>((lo[2] - origin_[2]) * lv.inv);
+  // lo >= origin, so the products are >= 0 and truncation is floor.
+  return ix + lv.shape.nx * (iy + lv.shape.ny * iz);
+}
+
+void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> level,
+                     std::span<const double> cell, const std::array<double, 3>& origin,
+                     const std::array<double, 3>& span) {
+  const std::size_t n = boxes.size();
+  origin_ = origin;
+  levels_.resize(cell.size());
+  for (std::size_t l = 0; l < cell.size(); ++l) {
+    Level& lv = levels_[l];
+    lv.inv = 1.0 / cell[l];
+    lv.shape = cell_shape(cell[l], span);
+    lv.key_bits = std::bit_width(lv.shape.cells() - 1);
+    lv.begin = lv.end = 0;
+  }
+  // Bucket bodies by level (counting sort), then key them.
+  if (level.empty()) {
+    levels_[0].end = static_cast<std::uint32_t>(n);
+  } else {
+    for (std::size_t i = 0; i < n; ++i) ++levels_[level[i]].end;
+    std::uint32_t sum = 0;
+    for (Level& lv : levels_) {
+      lv.begin = sum;
+      sum += lv.end;
+      lv.end = lv.begin;  // used as the fill cursor below
+    }
+  }
+  packed_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Aabb& b = boxes[i];
+    const double lo[3] = {b.lo.x(), b.lo.y(), b.lo.z()};
+    if (level.empty()) {
+      packed_[i] = (key_of(levels_[0], lo) << 32) | i;
+    } else {
+      Level& lv = levels_[level[i]];
+      packed_[lv.end++] = (key_of(lv, lo) << 32) | i;
+    }
+  }
+  items_.resize(n);
+  ids_.resize(n);
+  cell_key_.clear();
+  cell_start_.clear();
+  for (Level& lv : levels_) {
+    radix_sort_by_key(packed_.data() + lv.begin, lv.end - lv.begin, lv.key_bits, tmp_);
+    lv.cell_begin = static_cast<std::uint32_t>(cell_key_.size());
+    for (std::uint32_t k = lv.begin; k < lv.end; ++k) {
+      // The gather reads boxes in random order: prefetch a few bodies ahead.
+      if (k + 16 < lv.end) __builtin_prefetch(&boxes[static_cast<std::uint32_t>(packed_[k + 16])]);
+      const std::uint64_t p = packed_[k];
+      const auto id = static_cast<std::uint32_t>(p);
+      const auto key = static_cast<std::uint32_t>(p >> 32);
+      const Aabb& b = boxes[id];
+      items_[k] = {{b.lo.x(), b.lo.y(), b.lo.z()}, {b.hi.x(), b.hi.y(), b.hi.z()}};
+      ids_[k] = id;
+      if (k == lv.begin || key != cell_key_.back()) {
+        cell_key_.push_back(key);
+        cell_start_.push_back(k);
+      }
+    }
+    lv.cell_end = static_cast<std::uint32_t>(cell_key_.size());
+  }
+  cell_start_.push_back(static_cast<std::uint32_t>(n));
+}
+
+std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) const {
+  const std::uint32_t* key = cell_key_.data();
+  const std::uint32_t* start = cell_start_.data();
+  const Item* it = items_.data();
+  const std::uint32_t* ids = ids_.data();
+  const std::uint32_t cb = lv.cell_begin, ce = lv.cell_end;
+  const std::uint64_t nx = lv.shape.nx, nxy = lv.shape.nx * lv.shape.ny;
+  // Half stencil rows, as the key of their dx = -1 cell minus the cell's own key.
+  const std::uint64_t row[4] = {nx - 1, nxy - nx - 1, nxy - 1, nxy + nx - 1};
+  std::uint32_t cur[4] = {cb, cb, cb, cb};
+  std::uint64_t tests = 0;
+  auto cell_pair = [&](std::uint32_t c, std::uint32_t q) {
+    for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
+      for (std::uint32_t j = start[q]; j < start[q + 1]; ++j)
+        if (overlap(it[i], it[j])) emit(ids, i, j, out);
+    tests += std::uint64_t{start[c + 1] - start[c]} * (start[q + 1] - start[q]);
+  };
+  for (std::uint32_t c = cb; c < ce; ++c) {
+    const std::uint64_t k = key[c];
+    for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
+      for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
+        ++tests;
+        if (overlap(it[i], it[j])) emit(ids, i, j, out);
+      }
+    if (c + 1 < ce && key[c + 1] == k + 1) cell_pair(c, c + 1);
+    for (int r = 0; r < 4; ++r) {
+      const std::uint64_t t = k + row[r];
+      std::uint32_t p = cur[r];
+      while (p < ce && key[p] < t) ++p;
+      cur[r] = p;
+      for (; p < ce && key[p] <= t + 2; ++p) cell_pair(c, p);
+    }
+  }
+  return tests;
+}
+
+std::uint64_t CellGrid::cross_level(const Level& fine, const Level& coarse, std::vector<BodyPair>& out) {
+  // Queries: each finer body keyed by its cell at the coarse level, sorted by that key.
+  const std::uint32_t nq = fine.end - fine.begin;
+  std::vector<std::uint64_t>& qs = query_;
+  qs.resize(nq);
+  for (std::uint32_t k = 0; k < nq; ++k) qs[k] = (key_of(coarse, items_[fine.begin + k].lo) << 32) | (fine.begin + k);
+  radix_sort_by_key(qs.data(), nq, coarse.key_bits, tmp_);
+
+  const std::uint32_t* key = cell_key_.data();
+  const std::uint32_t* start = cell_start_.data();
+  const Item* it = items_.data();
+  const std::uint32_t* ids = ids_.data();
+  const std::uint32_t cb = coarse.cell_begin, ce = coarse.cell_end;
+  const auto nx = static_cast<std::int64_t>(coarse.shape.nx);
+  const auto nxy = static_cast<std::int64_t>(coarse.shape.nx * coarse.shape.ny);
+  std::int64_t row[9];
+  for (int dz = -1, r = 0; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy, ++r) row[r] = dz * nxy + dy * nx - 1;
+  std::uint32_t cur[9];
+  std::fill(cur, cur + 9, cb);
+  std::uint64_t tests = 0;
+  for (std::uint32_t k = 0; k < nq; ++k) {
+    const auto qk = static_cast<std::int64_t>(qs[k] >> 32);
+    const auto ia = static_cast<std::uint32_t>(qs[k]);
+    const Item& a = it[ia];
+    for (int r = 0; r < 9; ++r) {
+      const std::int64_t t = qk + row[r];
+      std::uint32_t p = cur[r];
+      while (p < ce && static_cast<std::int64_t>(key[p]) < t) ++p;
+      cur[r] = p;
+      for (; p < ce && static_cast<std::int64_t>(key[p]) <= t + 2; ++p) {
+        for (std::uint32_t j = start[p]; j < start[p + 1]; ++j)
+          if (overlap(a, it[j])) emit(ids, ia, j, out);
+        tests += start[p + 1] - start[p];
+      }
+    }
+  }
+  return tests;
+}
+
+std::uint64_t CellGrid::find_pairs(std::vector<BodyPair>& out) {
+  std::uint64_t tests = 0;
+  for (std::size_t f = 0; f < levels_.size(); ++f) {
+    if (levels_[f].begin == levels_[f].end) continue;
+    tests += same_level(levels_[f], out);
+    for (std::size_t c = f + 1; c < levels_.size(); ++c)
+      if (levels_[c].begin != levels_[c].end) tests += cross_level(levels_[f], levels_[c], out);
+  }
+  return tests;
+}
+
+}  // namespace ccd::detail

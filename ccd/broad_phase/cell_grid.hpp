@@ -1,0 +1,93 @@
+#pragma once
+// Internal engine of `grid` and `hgrid`: sorted cell lists over one or more grid levels.
+// Not a broad phase itself; UniformGrid and HierarchicalGrid choose the cell sizes and
+// each body's level, this file does the rest.
+//
+// Cells. Level l has cell size s_l and shares the origin o (the minimum box lo corner) with
+// every level. A body lives in the cell of its LOWER CORNER, c = floor((lo - o) / s_l) per
+// axis, at its own level. Cells are keyed row-major, key = ix + nx (iy + ny iz), with one
+// empty padding column (ix = nx - 1) and row (iy = ny - 1), so a neighbour offset never
+// wraps onto a real cell; keys are below 2^32 by contract and relative to o, so they are
+// never negative (no hashing, no modulo, no collisions).
+//
+// Why neighbours suffice. Callers guarantee s_l >= (1 + 2^-20) * extent of every body at
+// level l or finer, and at most 2^20 cells per axis. If boxes A and B overlap then
+// |lo_A - lo_B| <= max(extent_A, extent_B) on each axis, so their cells at the coarser of
+// their two levels differ by at most one per axis; the 2^-20 slack absorbs the rounding
+// of (lo - o) / s (relative error < 2^-50 on indices below 2^20).
+//
+// Pairs. Per level, bodies are sorted by (key, body) with an LSD radix sort on the key bits
+// in use and copied in that order (48-byte boxes; ids apart, read only on hits).
+// Same level: each cell against itself and the 13 neighbours of a half stencil
+// (+x; the 3 cells of row y+1; the 9 cells of plane z+1), found with 4 monotone cursors
+// over the sorted cell keys (one per stencil row), so every unordered pair of cells is met
+// once. Across levels: the bodies of a finer level are keyed by their cell at each
+// coarser non-empty level, radix-sorted, and merged with that level's cells by 9 monotone
+// cursors (the 27-cell neighbourhood), so a pair of bodies on different levels is met
+// once, from the finer body. Every candidate pair gets the exact closed-interval box test.
+#include <ccd/broad_phase/broad_phase.hpp>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace ccd::detail {
+
+/// Cells per axis (with padding) and total cells of a level; saturates above 2^40 total.
+struct CellShape {
+  std::uint64_t nx = 3, ny = 3, nz = 1;
+  std::uint64_t cells() const;
+};
+
+/// Relative slack on cell sizes that absorbs index rounding (see the header comment).
+inline constexpr double kCellSlack = 0x1p-20;
+/// Most cells per axis and per level.
+inline constexpr double kMaxCellsPerAxis = 0x1p20;
+inline constexpr std::uint64_t kMaxCellsPerLevel = std::uint64_t{1} << 32;
+
+/// The shape of a level of cell size `cell` over lower corners in [o, o + span].
+CellShape cell_shape(double cell, const std::array<double, 3>& span);
+
+/// Smallest cell size >= `wanted` (>= 0) that respects the per-axis and per-level limits;
+/// 1 when everything is zero.
+double admissible_cell(double wanted, const std::array<double, 3>& span);
+
+class CellGrid {
+ public:
+  /// Builds the cell lists. `cell[l]` is level l's cell size, finest first (strictly
+  /// increasing); `level[i]` is body i's level (empty span: all on level 0). `origin` is the
+  /// componentwise minimum of the lower corners, `span` the maximum lower corner minus it.
+  void build(std::span<const Aabb> boxes, std::span<const std::uint8_t> level, std::span<const double> cell,
+             const std::array<double, 3>& origin, const std::array<double, 3>& span);
+  /// Appends every overlapping pair (a < b) once; returns the number of box tests.
+  std::uint64_t find_pairs(std::vector<BodyPair>& out);
+
+  struct Item {
+    double lo[3];
+    double hi[3];
+  };
+
+ private:
+  struct Level {
+    double inv = 1.0;  // 1 / cell size
+    CellShape shape;
+    std::uint32_t begin = 0, end = 0;            // items [begin, end)
+    std::uint32_t cell_begin = 0, cell_end = 0;  // cells [cell_begin, cell_end)
+    int key_bits = 0;
+  };
+  std::uint64_t key_of(const Level& lv, const double lo[3]) const;
+  std::uint64_t same_level(const Level& lv, std::vector<BodyPair>& out) const;
+  std::uint64_t cross_level(const Level& fine, const Level& coarse, std::vector<BodyPair>& out);
+
+  std::array<double, 3> origin_{};
+  std::vector<Level> levels_;
+  std::vector<std::uint64_t> packed_, tmp_;  // (key << 32) | body, sorted per level
+  std::vector<std::uint64_t> query_;         // cross-level queries: (coarse key << 32) | item
+  std::vector<Item> items_;                  // boxes in sorted order (48 bytes each)
+  std::vector<std::uint32_t> ids_;           // their body ids
+  std::vector<std::uint32_t> cell_key_;      // per cell, levels one after another
+  std::vector<std::uint32_t> cell_start_;    // first item of each cell, + sentinel
+};
+
+}  // namespace ccd::detail
