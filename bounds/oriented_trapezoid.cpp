@@ -1,5 +1,6 @@
 #include <bounds/oriented_trapezoid.hpp>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 
