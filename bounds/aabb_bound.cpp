@@ -1,0 +1,23 @@
+#include <bounds/aabb_bound.hpp>
+#include <bounds/rounding.hpp>
+
+namespace ccd {
+
+void AabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  t0_ = ctx.t0;
+  const std::size_t n = ctx.start.size();
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodyState& s = ctx.start[i];
+    boxes[i] = Aabb::around(s.position, s.radius + rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius));
+  }
+  boxes_.assign(boxes.begin(), boxes.end());
+}
+
+bool AabbBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+  if (!boxes_[a].overlaps(boxes_[b])) return false;
+  if (earliest) *earliest = t0_;
+  return true;
+}
+
+}  // namespace ccd

@@ -1,0 +1,71 @@
+#include <bounds/capsule_bound.hpp>
+#include <bounds/rounding.hpp>
+#include <ccd/queries/segment_segment.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+
+namespace ccd {
+namespace {
+
+double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
+  const Vec3 d = p1 - p0;
+  const double dd = d.squaredNorm();
+  const double u = dd > 0.0 ? std::clamp((x - p0).dot(d) / dd, 0.0, 1.0) : 0.0;
+  return (x - (p0 + d * u)).norm();
+}
+
+}  // namespace
+
+void CapsuleBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  if (!ctx.exact) throw std::invalid_argument("capsule needs the exact trajectories (StepContext::exact)");
+  t0_ = ctx.t0;
+  const Trajectories& tr = *ctx.exact;
+  const std::size_t n = tr.size();
+  capsules_.resize(n);
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 p0 = tr.position(i, ctx.t0);
+    const Vec3 p1 = tr.position(i, ctx.t1);
+    double e = 0.0;
+    const auto pieces = tr.pieces(i);
+    const Piece* q = &tr.piece_at(i, ctx.t0);
+    for (; q != pieces.data() + pieces.size() && q->t0 <= ctx.t1; ++q) {
+      const double u0 = std::max(ctx.t0, q->t0);
+      const double u1 = std::min(ctx.t1, q->t1);
+      if (u1 < u0) continue;
+      const double hk = u1 - u0;
+      const double dev = q->a.norm() * hk * hk / 8.0;
+      const double ends = q->t0 <= ctx.t0 && q->t1 >= ctx.t1
+                              ? 0.0  // the single piece's chord is S itself
+                              : std::max(point_segment_distance(q->position(u0), p0, p1),
+                                         point_segment_distance(q->position(u1), p0, p1));
+      e = std::max(e, ends + dev);
+    }
+    Aabb swept = tr.swept_bounds(i, ctx.t0, ctx.t1);
+    const double magnitude = swept.lo.cwiseAbs().cwiseMax(swept.hi.cwiseAbs()).maxCoeff() + e;
+    const double slack = rounding_slack(magnitude);
+    const double radius = tr.radius(i) + e + slack;
+    capsules_[i] = {p0, p1, radius};
+    swept.lo.array() -= slack;
+    swept.hi.array() += slack;
+    const Aabb cap{p0.cwiseMin(p1).array() - radius, p0.cwiseMax(p1).array() + radius};
+    boxes[i] = {swept.lo.cwiseMax(cap.lo), swept.hi.cwiseMin(cap.hi)};
+  }
+}
+
+bool CapsuleBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+  const Capsule& x = capsules_[a];
+  const Capsule& y = capsules_[b];
+  const SegmentSegmentResult c = segment_segment_closest(x.p0, x.p1, y.p0, y.p1);
+  const double R = x.radius + y.radius;
+  const double closest_error = 16.0 * std::numeric_limits<double>::epsilon() *
+                               ((x.p1 - x.p0).squaredNorm() + (y.p1 - y.p0).squaredNorm() +
+                                (x.p0 - y.p0).squaredNorm());
+  if (c.distance_squared > R * R + closest_error) return false;
+  if (earliest) *earliest = t0_;
+  return true;
+}
+
+}  // namespace ccd

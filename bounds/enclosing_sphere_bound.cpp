@@ -1,0 +1,74 @@
+#include <bounds/enclosing_sphere_bound.hpp>
+#include <bounds/rounding.hpp>
+#include <bounds/wall_fold.hpp>
+
+namespace ccd {
+namespace {
+
+double box_point_distance_squared(const Aabb& box, const Vec3& x) {
+  const Vec3 d = (box.lo - x).cwiseMax(x - box.hi).cwiseMax(Vec3::Zero());
+  return d.squaredNorm();
+}
+
+}  // namespace
+
+void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  t0_ = ctx.t0;
+  const double h = ctx.t1 - ctx.t0;
+  const double A = ctx.acceleration_bound;
+  const std::size_t n = ctx.start.size();
+  shapes_.resize(n);
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodyState& s = ctx.start[i];
+    const double speed = s.velocity.norm();
+    double c = h;
+    double rc = 0.5 * A * h * h;  // radius of the centre region
+    if (A * h < 2.0 * speed) {
+      c = 0.5 * h + A * h * h / (4.0 * speed);
+      rc = 0.5 * speed * h + 0.25 * A * h * h;
+    }
+    const Vec3 centre = s.position + s.velocity * c;
+    const double slack =
+        rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius + s.velocity.cwiseAbs().maxCoeff() * h + A * h * h);
+    rc += slack;
+    Shape& sh = shapes_[i];
+    sh.centre = centre;
+    sh.radius = s.radius + rc;
+    sh.boxed = false;
+    sh.box = Aabb::around(centre, sh.radius);
+    if (ctx.walls) {
+      for (int k = 0; k < 3; ++k) {
+        const double L = ctx.walls->min[k] + s.radius;
+        const double H = ctx.walls->max[k] - s.radius;
+        if (L <= H && (centre[k] - rc < L || centre[k] + rc > H)) {
+          const Interval f = fold_interval(centre[k] - rc, centre[k] + rc, L, H);
+          sh.box.lo[k] = f.lo - s.radius - slack;
+          sh.box.hi[k] = f.hi + s.radius + slack;
+          sh.boxed = true;
+        }
+      }
+    }
+    boxes[i] = sh.box;
+  }
+}
+
+bool EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+  const Shape& x = shapes_[a];
+  const Shape& y = shapes_[b];
+  bool hit;
+  if (!x.boxed && !y.boxed) {
+    const double R = x.radius + y.radius;
+    hit = (x.centre - y.centre).squaredNorm() <= R * R;
+  } else if (x.boxed && y.boxed) {
+    hit = x.box.overlaps(y.box);
+  } else {
+    const Shape& ball = x.boxed ? y : x;
+    const Shape& box = x.boxed ? x : y;
+    hit = box_point_distance_squared(box.box, ball.centre) <= ball.radius * ball.radius;
+  }
+  if (hit && earliest) *earliest = t0_;
+  return hit;
+}
+
+}  // namespace ccd

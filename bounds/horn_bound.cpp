@@ -1,0 +1,37 @@
+#include <bounds/horn_bound.hpp>
+
+#include <stdexcept>
+
+namespace ccd {
+
+HornBound::HornBound(int pieces) : m_(pieces) {
+  if (pieces < 1) throw std::invalid_argument("horn needs M >= 1 trapezoids");
+}
+
+void HornBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  const std::size_t n = ctx.start.size();
+  traps_.resize(n * m_);
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Trapezoid* z = traps_.data() + i * m_;
+    horn_trapezoids(ctx.start[i], ctx.t0, ctx.t1, ctx.acceleration_bound, ctx.walls, m_, z);
+    Aabb box = z[0].hull();
+    for (int j = 1; j < m_; ++j) box.merge(z[j].hull());
+    boxes[i] = box;
+  }
+}
+
+bool HornBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+  const Trapezoid* za = traps_.data() + std::size_t{a} * m_;
+  const Trapezoid* zb = traps_.data() + std::size_t{b} * m_;
+  for (int j = 0; j < m_; ++j) {
+    const TrapezoidOverlap o = trapezoid_overlap(za[j], zb[j]);
+    if (o.status == TrapezoidOverlap::Status::Possible) {
+      if (earliest) *earliest = o.earliest;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace ccd

@@ -1,0 +1,37 @@
+#pragma once
+// `horn:M` (Knowledge::Bounded, default M = 4): Hubbard's parabolic horn. A body with
+// position p and velocity v at t0 and |acceleration| <= A (ctx.acceleration_bound) has its
+// centre within A s^2 / 2 of p + v s, s = t - t0, so the body lies in the sphere of centre
+// p + v s and radius r + A s^2 / 2. The horn is covered by M axis-aligned hyper-trapezoids
+// over equal sub-intervals of [t0, t1] (bounds/trapezoid.hpp; slack at most A (h/M)^2 / 8
+// per sub-interval). Box: the hull of the trapezoids.
+// Pair test: trapezoid_overlap on each sub-interval in time order (the faces move
+// linearly: six half-lines in time); true at the first sub-interval where the two
+// trapezoids overlap, with `*earliest` = the earliest time of overlap (no contact is
+// possible before it while the bound's assumption holds). O(M) per pair, no allocation.
+// Walls: a reflection is an unbounded acceleration, so an axis of a sub-interval on which
+// the horn's centre may pass a wall plane uses the static folded interval of that
+// sub-interval (bounds/wall_fold.hpp): conservative across reflections, looser there.
+// Guarantee: conservative whenever |acceleration| <= A over the step (walls included).
+// M = 4 by default: slack A h^2 / 128, a quarter of the pair cost of M = 8.
+#include <bounds/bound.hpp>
+#include <bounds/trapezoid.hpp>
+
+namespace ccd {
+
+class HornBound final : public Bound {
+ public:
+  static constexpr int default_pieces = 4;
+  explicit HornBound(int pieces = default_pieces);
+  void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
+  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  int pieces() const { return m_; }
+  /// Trapezoid j (sub-interval j, 0 <= j < M) of `body` from the last prepare.
+  const Trapezoid& trapezoid(std::uint32_t body, int j) const { return traps_[std::size_t{body} * m_ + j]; }
+
+ private:
+  int m_;
+  std::vector<Trapezoid> traps_;
+};
+
+}  // namespace ccd

@@ -1,0 +1,40 @@
+#pragma once
+// `horn_sat:M` (Knowledge::Bounded, default M = 4): the horn of `horn:M` (same sub-intervals,
+// same half-widths r + A s^2 / 2 interpolated linearly) covered by cubes oriented along the
+// body's velocity at t0: axes v/|v| and two perpendiculars (velocity_frame), centre p + v s.
+// Each cube contains the horn's sphere whatever its orientation, so the cover is as valid as
+// the axis-aligned one. Box: the world hull of the oriented trapezoids.
+// Pair test: per sub-interval in time order, the 15-axis SAT sweep of
+// bounds/oriented_trapezoid.hpp (projections linear in time; epsilon 1e-9 on |R_ij| for
+// near-parallel edge-cross axes, conservative); `*earliest` = the earliest possible contact.
+// Zero (or < 1e-100) velocity: the axis-aligned frame.
+// Walls: a body whose horn may pass a wall plane during the step uses the axis-aligned frame
+// with the folded trapezoids of `horn:M` (conservative across reflections).
+// Guarantee: conservative whenever |acceleration| <= A over the step.
+#include <bounds/bound.hpp>
+#include <bounds/oriented_trapezoid.hpp>
+
+namespace ccd {
+
+class HornSatBound final : public Bound {
+ public:
+  static constexpr int default_pieces = 4;
+  explicit HornSatBound(int pieces = default_pieces);
+  void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
+  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  int pieces() const { return m_; }
+  /// Oriented trapezoid j (0 <= j < M) of `body` from the last prepare.
+  OrientedTrapezoid trapezoid(std::uint32_t body, int j) const;
+
+ private:
+  struct Ends {
+    Vec3 c0, c1, h0, h1;
+  };
+  int m_;
+  std::vector<Eigen::Matrix3d> frames_;
+  std::vector<Ends> ends_;
+  std::vector<double> times_;         // the M + 1 sub-interval ends
+  std::vector<Trapezoid> scratch_;    // one body's axis-aligned trapezoids
+};
+
+}  // namespace ccd

@@ -1,0 +1,165 @@
+#include <bounds/trapezoid.hpp>
+#include <bounds/wall_fold.hpp>
+#include <tests/bounds/bound_test_support.hpp>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+using ccd::Trapezoid;
+using ccd::TrapezoidOverlap;
+using ccd::Vec3;
+
+namespace {
+
+Trapezoid random_trapezoid(std::mt19937_64& rng, double t0, double t1) {
+  std::uniform_real_distribution<double> u(-2.0, 2.0), w(0.0, 1.0);
+  Trapezoid z;
+  z.t0 = t0;
+  z.t1 = t1;
+  const Vec3 c0(u(rng), u(rng), u(rng)), c1(u(rng), u(rng), u(rng));
+  const Vec3 h0(w(rng), w(rng), w(rng)), h1(w(rng), w(rng), w(rng));
+  z.lo0 = c0 - h0;
+  z.hi0 = c0 + h0;
+  z.lo1 = c1 - h1;
+  z.hi1 = c1 + h1;
+  return z;
+}
+
+// Largest per-axis gap between two boxes (<= 0: they overlap as closed boxes).
+double gap(const ccd::Aabb& a, const ccd::Aabb& b) {
+  return std::max((a.lo - b.hi).maxCoeff(), (b.lo - a.hi).maxCoeff());
+}
+
+}  // namespace
+
+TEST_CASE("trapezoid_overlap agrees with dense sampling in time", "[bounds][trapezoid]") {
+  std::mt19937_64 rng(11);
+  constexpr int samples = 1001;
+  int possible = 0, disjoint = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double t0 = 0.25, t1 = 0.75;
+    const Trapezoid a = random_trapezoid(rng, t0, t1);
+    const Trapezoid b = random_trapezoid(rng, t0, t1);
+    const TrapezoidOverlap o = ccd::trapezoid_overlap(a, b);
+    double first_sampled = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < samples; ++k) {
+      const double t = t0 + (t1 - t0) * k / (samples - 1);
+      if (gap(a.at(t), b.at(t)) <= 0.0) {
+        first_sampled = t;
+        break;
+      }
+    }
+    if (o.status == TrapezoidOverlap::Status::Disjoint) {
+      ++disjoint;
+      CHECK(first_sampled == std::numeric_limits<double>::infinity());  // never disjoint when sampled overlap
+    } else {
+      ++possible;
+      CHECK(o.earliest >= t0);
+      CHECK(o.earliest <= first_sampled);
+      // The boxes touch at the reported time: the gap there is rounding only (faces ~2, so
+      // a few ulps of 4).
+      CHECK(gap(a.at(o.earliest), b.at(o.earliest)) <= 64 * std::numeric_limits<double>::epsilon() * 4);
+      // ... and not earlier: just before it they are apart (unless it is t0).
+      if (o.earliest > t0 + 1e-9) CHECK(gap(a.at(o.earliest - 1e-9), b.at(o.earliest - 1e-9)) > 0.0);
+    }
+  }
+  CHECK(possible > 300);  // both outcomes exercised
+  CHECK(disjoint > 300);
+}
+
+TEST_CASE("trapezoid_overlap named cases", "[bounds][trapezoid]") {
+  Trapezoid a{0.0, 1.0, Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  SECTION("tangent exactly at the end: possible at t1") {
+    // b slides in x from 3 to 1 (its lo face): touches a's hi face x = 1 at t = 1.
+    Trapezoid b{0.0, 1.0, Vec3(3, 0, 0), Vec3(4, 1, 1), Vec3(1, 0, 0), Vec3(2, 1, 1)};
+    const auto o = ccd::trapezoid_overlap(a, b);
+    REQUIRE(o.status == TrapezoidOverlap::Status::Possible);
+    CHECK(o.earliest == Approx(1.0));
+  }
+  SECTION("stationary and separated on one axis: disjoint") {
+    Trapezoid b{0.0, 1.0, Vec3(0, 2, 0), Vec3(1, 3, 1), Vec3(0, 2, 0), Vec3(1, 3, 1)};
+    CHECK(ccd::trapezoid_overlap(a, b).status == TrapezoidOverlap::Status::Disjoint);
+  }
+  SECTION("coincident: possible at t0") {
+    const auto o = ccd::trapezoid_overlap(a, a);
+    CHECK(o.status == TrapezoidOverlap::Status::Possible);
+    CHECK(o.earliest == 0.0);
+  }
+  SECTION("passing through on different axes at different times: disjoint") {
+    // Overlap in x only for t in [0, 0.125], in y only for t in [8/9, 1]: never both.
+    Trapezoid b{0.0, 1.0, Vec3(0.5, 5, 0), Vec3(1.5, 6, 1), Vec3(4.5, 1, 0), Vec3(5.5, 2, 1)};
+    b.lo0.y() = 5;
+    b.hi0.y() = 6;
+    b.lo1.y() = 0.5;
+    b.hi1.y() = 1.5;
+    CHECK(ccd::trapezoid_overlap(a, b).status == TrapezoidOverlap::Status::Disjoint);
+  }
+}
+
+TEST_CASE("fold_interval encloses the reflected interval", "[bounds][wall_fold]") {
+  // Triangle-wave reference: fold x into [L, H] by repeated reflection.
+  const auto fold = [](double x, double L, double H) {
+    const double w = H - L;
+    double y = std::fmod(x - L, 2 * w);
+    if (y < 0) y += 2 * w;
+    return y <= w ? L + y : L + 2 * w - y;
+  };
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-30.0, 30.0);
+  const double L = 1.0, H = 9.0;
+  for (int i = 0; i < 20000; ++i) {
+    double lo = u(rng), hi = lo + std::abs(u(rng)) * (i % 3 == 0 ? 0.1 : 1.0);
+    const ccd::Interval f = ccd::fold_interval(lo, hi, L, H);
+    CHECK(f.lo >= L - 1e-12);
+    CHECK(f.hi <= H + 1e-12);
+    for (int k = 0; k <= 20; ++k) {
+      const double x = lo + (hi - lo) * k / 20;
+      const double y = fold(x, L, H);
+      // 1e-12: the reference's fmod rounding on |x| <= 60.
+      if (!(y >= f.lo - 1e-12 && y <= f.hi + 1e-12)) FAIL("x " << x << " folds to " << y << " outside [" << f.lo << ", " << f.hi << "]");
+    }
+  }
+  SECTION("inside: unchanged") {
+    const auto f = ccd::fold_interval(2, 3, L, H);
+    CHECK(f.lo == 2);
+    CHECK(f.hi == 3);
+  }
+  SECTION("short overshoot folds onto the clipped interval") {
+    const auto f = ccd::fold_interval(5, 10, L, H);  // 10 mirrors to 8, inside [5, 9]
+    CHECK(f.lo == 5);
+    CHECK(f.hi == 9);
+  }
+  SECTION("long overshoot extends below") {
+    const auto f = ccd::fold_interval(8, 12, L, H);  // 12 mirrors to 6
+    CHECK(f.lo == 6);
+    CHECK(f.hi == 9);
+  }
+}
+
+TEST_CASE("horn trapezoids contain bounded-acceleration motions", "[bounds][trapezoid][containment]") {
+  // Checked directly on the trapezoids (not only their hull): at every sampled time the
+  // body lies in the trapezoid of its sub-interval, walls and acceleration changes included.
+  std::mt19937_64 rng(99);
+  std::vector<Trapezoid> z;
+  long failed = 0;
+  for (int rep = 0; rep < 24; ++rep) {
+    const double h = rep % 3 == 0 ? 0.5 : 1.0 / 60;
+    const int m = 1 + rep % 6;
+    const ccd::test::Step st = ccd::test::random_gas(rng, 400, h, 2 * h, 40.0, rep % 4 != 0, rep % 2 == 0, 4);
+    z.resize(m);
+    for (std::size_t i = 0; i < st.start.size(); ++i) {
+      ccd::horn_trapezoids(st.start[i], st.t0, st.t1, st.A, st.scene.box, m, z.data());
+      for (int j = 0; j < m; ++j) {
+        for (int k = 0; k <= 16; ++k) {
+          const double t = z[j].t0 + (z[j].t1 - z[j].t0) * k / 16;
+          const ccd::Aabb b = z[j].at(t);
+          const Vec3 c = st.traj.position(i, t);
+          const double r = st.traj.radius(i);
+          if (!((b.lo.array() <= c.array() - r).all() && (c.array() + r <= b.hi.array()).all())) ++failed;
+        }
+      }
+    }
+  }
+  CHECK(failed == 0);
+}
