@@ -42,15 +42,42 @@ Aabb centre_box(const Trajectories& traj, std::size_t i, double w0, double w1) {
 struct Box {
   double lo[3];
   double hi[3];
-  std::uint32_t id;
 };
 
-// Sort and sweep of one window: appends keys (a << 32 | b), a < b, sorted.
+// One box in one grid column, ordered by (column, lo on the sweep axis, id).
+struct ColumnEntry {
+  std::uint64_t column;
+  double lo;
+  std::uint32_t id;
+  bool operator<(const ColumnEntry& o) const {
+    return column < o.column || (column == o.column && (lo < o.lo || (lo == o.lo && id < o.id)));
+  }
+};
+
+struct WindowScratch {
+  std::vector<Box> boxes;
+  std::vector<ColumnEntry> entries;
+  std::vector<std::uint32_t> big;
+};
+
+bool overlap(const Box& x, const Box& y) {
+  return x.lo[0] <= y.hi[0] && y.lo[0] <= x.hi[0] && x.lo[1] <= y.hi[1] && y.lo[1] <= x.hi[1] &&
+         x.lo[2] <= y.hi[2] && y.lo[2] <= x.hi[2];
+}
+
+// Broad phase of one window: appends keys (a << 32 | b), a < b, sorted and unique.
+// Boxes go into the columns of a uniform grid on the two axes of largest spread (cell
+// size twice the mean box extent there) and are swept along the third axis within each
+// column. A pair is reported only in the column that holds the corner (max lo, max lo) of
+// the two boxes' overlap, which both boxes cover: once, and never missed. Boxes covering
+// more than kMaxCells columns are checked against every box instead.
 void window_candidates(const Trajectories& traj, const std::vector<double>& margin, double w0, double w1,
-                       std::vector<Box>& boxes, std::vector<std::uint64_t>& keys) {
+                       WindowScratch& sc, std::vector<std::uint64_t>& keys) {
+  constexpr std::int64_t kMaxCells = 64;
   const std::size_t n = traj.size();
+  std::vector<Box>& boxes = sc.boxes;
   boxes.resize(n);
-  double mean[3] = {0, 0, 0};
+  double mean[3] = {0, 0, 0}, extent[3] = {0, 0, 0};
   for (std::size_t i = 0; i < n; ++i) {
     const Aabb c = centre_box(traj, i, w0, w1);
     const double grow = traj.radius(i) + margin[i];
@@ -59,37 +86,78 @@ void window_candidates(const Trajectories& traj, const std::vector<double>& marg
       b.lo[k] = c.lo[k] - grow;
       b.hi[k] = c.hi[k] + grow;
       mean[k] += 0.5 * (c.lo[k] + c.hi[k]);
+      extent[k] += b.hi[k] - b.lo[k];
     }
-    b.id = static_cast<std::uint32_t>(i);
   }
-  // Axis of largest spread of the box centres (variance about the mean: no cancellation).
-  int axis = 0;
-  double best = -1.0;
+  // Spread of the box centres per axis (variance about the mean: no cancellation).
+  double var[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k) {
-    const double m = mean[k] / static_cast<double>(n);
-    double var = 0.0;
+    mean[k] /= static_cast<double>(n);
+    extent[k] /= static_cast<double>(n);
     for (const Box& b : boxes) {
-      const double d = 0.5 * (b.lo[k] + b.hi[k]) - m;
-      var += d * d;
-    }
-    if (var > best) {
-      best = var;
-      axis = k;
+      const double d = 0.5 * (b.lo[k] + b.hi[k]) - mean[k];
+      var[k] += d * d;
     }
   }
-  std::sort(boxes.begin(), boxes.end(), [axis](const Box& x, const Box& y) {
-    return x.lo[axis] < y.lo[axis] || (x.lo[axis] == y.lo[axis] && x.id < y.id);
-  });
-  const int o1 = (axis + 1) % 3, o2 = (axis + 2) % 3;
-  const std::size_t start = keys.size();
+  int sweep = 0;
+  for (int k = 1; k < 3; ++k)
+    if (var[k] < var[sweep]) sweep = k;
+  const int gy = (sweep + 1) % 3, gz = (sweep + 2) % 3;
+  double origin[3] = {0, 0, 0}, top[3] = {0, 0, 0};
+  for (int k : {gy, gz}) {
+    origin[k] = boxes[0].lo[k];
+    top[k] = boxes[0].hi[k];
+    for (const Box& b : boxes) {
+      origin[k] = std::min(origin[k], b.lo[k]);
+      top[k] = std::max(top[k], b.hi[k]);
+    }
+  }
+  // Cell size: twice the mean extent, but at most 2^20 cells per axis.
+  double h = 2.0 * std::max(extent[gy], extent[gz]);
+  h = std::max({h, (top[gy] - origin[gy]) / 1048576.0, (top[gz] - origin[gz]) / 1048576.0});
+  if (!(h > 0.0)) h = 1.0;
+  auto cell = [&](double x, int k) { return static_cast<std::int64_t>(std::floor((x - origin[k]) / h)); };
+  constexpr std::uint64_t kStride = std::uint64_t{1} << 21;
+  sc.entries.clear();
+  sc.big.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    const Box& x = boxes[i];
-    for (std::size_t j = i + 1; j < n && boxes[j].lo[axis] <= x.hi[axis]; ++j) {
-      const Box& y = boxes[j];
-      if (x.lo[o1] <= y.hi[o1] && y.lo[o1] <= x.hi[o1] && x.lo[o2] <= y.hi[o2] && y.lo[o2] <= x.hi[o2]) {
-        const std::uint64_t a = std::min(x.id, y.id), b = std::max(x.id, y.id);
-        keys.push_back(a << 32 | b);
-      }
+    const Box& b = boxes[i];
+    const std::int64_t y0 = cell(b.lo[gy], gy), y1 = cell(b.hi[gy], gy);
+    const std::int64_t z0 = cell(b.lo[gz], gz), z1 = cell(b.hi[gz], gz);
+    if ((y1 - y0 + 1) * (z1 - z0 + 1) > kMaxCells) {
+      sc.big.push_back(static_cast<std::uint32_t>(i));
+      continue;
+    }
+    for (std::int64_t y = y0; y <= y1; ++y)
+      for (std::int64_t z = z0; z <= z1; ++z)
+        sc.entries.push_back({static_cast<std::uint64_t>(y) * kStride + static_cast<std::uint64_t>(z), b.lo[sweep],
+                              static_cast<std::uint32_t>(i)});
+  }
+  std::sort(sc.entries.begin(), sc.entries.end());
+  const std::size_t start = keys.size();
+  auto emit = [&keys](std::uint32_t x, std::uint32_t y) {
+    const std::uint64_t a = std::min(x, y), b = std::max(x, y);
+    keys.push_back(a << 32 | b);
+  };
+  const auto& e = sc.entries;
+  for (std::size_t i = 0; i < e.size(); ++i) {
+    const Box& x = boxes[e[i].id];
+    for (std::size_t j = i + 1; j < e.size() && e[j].column == e[i].column && e[j].lo <= x.hi[sweep]; ++j) {
+      const Box& y = boxes[e[j].id];
+      if (!overlap(x, y)) continue;
+      const std::uint64_t owner = static_cast<std::uint64_t>(cell(std::max(x.lo[gy], y.lo[gy]), gy)) * kStride +
+                                  static_cast<std::uint64_t>(cell(std::max(x.lo[gz], y.lo[gz]), gz));
+      if (owner == e[i].column) emit(e[i].id, e[j].id);
+    }
+  }
+  // Big boxes against everything (each pair once: a big box meets a smaller index big
+  // box only from that one's side).
+  for (std::size_t k = 0; k < sc.big.size(); ++k) {
+    const std::uint32_t g = sc.big[k];
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool other_big = std::binary_search(sc.big.begin(), sc.big.end(), static_cast<std::uint32_t>(i));
+      if (i == g || (other_big && i < g)) continue;
+      if (overlap(boxes[g], boxes[i])) emit(g, static_cast<std::uint32_t>(i));
     }
   }
   std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.end());
@@ -155,7 +223,7 @@ TruthResult compute_truth_detailed(const Trajectories& traj, const TruthOptions&
 
   // 1. Candidates per window.
   std::vector<std::vector<std::uint64_t>> per_window(windows);
-  std::vector<std::vector<Box>> scratch(threads);
+  std::vector<WindowScratch> scratch(threads);
   parallel_for(windows, threads, [&](std::size_t k, unsigned t) {
     window_candidates(traj, margin, window_start(k), window_start(k + 1), scratch[t], per_window[k]);
   });

@@ -72,9 +72,12 @@ int run_truth(std::span<const std::string> args) {
   try {
     const auto start = std::chrono::steady_clock::now();
     const ccd::Scene scene = ccd::load_scene(scene_path);
+    const auto loaded = std::chrono::steady_clock::now();
     const ccd::Trajectories traj(scene);
+    const auto built = std::chrono::steady_clock::now();
     const ccd::TruthResult result = ccd::compute_truth_detailed(traj, options);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto done = std::chrono::steady_clock::now();
+    auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     if (!out_path.empty()) ccd::save_truth({scene.horizon, result.events}, out_path);
     if (quiet || out_path == "-") return 0;
     std::size_t tangent = 0;
@@ -87,9 +90,10 @@ int run_truth(std::span<const std::string> args) {
               << "pairs        " << st.pairs_in_contact << " in contact; " << st.candidate_pair_windows
               << " candidate pair-windows in " << st.windows << " windows, " << st.candidate_runs
               << " solved exactly\n";
-    char time_text[64];
-    std::snprintf(time_text, sizeof time_text, "%.3f s", seconds);
-    std::cout << "time         " << time_text << " (" << st.threads << " threads, load + trajectories + truth)\n";
+    char time_text[160];
+    std::snprintf(time_text, sizeof time_text, "%.3f s: load %.3f s, trajectories %.3f s, truth %.3f s (%u threads)",
+                  secs(start, done), secs(start, loaded), secs(loaded, built), secs(built, done), st.threads);
+    std::cout << "time         " << time_text << "\n";
     if (!out_path.empty()) std::cout << "written      " << out_path << "\n";
   } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab truth: " << e.what() << "\n";
