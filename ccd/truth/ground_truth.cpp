@@ -172,7 +172,7 @@ std::size_t automatic_windows(const Trajectories& traj) {
     path += (c.hi - c.lo).maxCoeff();
     diameter += 2.0 * traj.radius(i);
   }
-  const double w = std::ceil(2.0 * path / diameter);
+  const double w = std::ceil(0.5 * path / diameter);
   if (!(w >= 1.0)) return 1;
   return static_cast<std::size_t>(std::min<double>(w, TruthOptions::max_auto_windows));
 }

@@ -6,7 +6,9 @@
 //  1. Broad phase in space-time: the horizon is split into `windows` equal time windows;
 //     in each, every body's exact swept box (its centre's path bounds over the window,
 //     plus its radius and a small safety margin that covers rounding and the tangency
-//     band) is sorted along the axis of largest spread and swept (sort and sweep). This is
+//     band) goes into the columns of a uniform grid on the two axes of largest spread and
+//     is swept along the third axis within each column (each overlapping pair reported
+//     once, by the column holding the low corner of the boxes' overlap). This is
 //     conservative: a pair in contact at time t has overlapping boxes in every window
 //     containing t. Windows run in parallel.
 //  2. The candidate (pair, window) entries are sorted; each run of consecutive windows of
@@ -38,8 +40,9 @@ struct ContactEvent {
 struct TruthOptions {
   /// 0: one thread per hardware core (std::thread::hardware_concurrency()).
   static constexpr unsigned default_threads = 0;
-  /// 0: automatic, about 2 * (mean path extent) / (mean diameter) windows, so a body's
-  /// box grows by about half its diameter per window.
+  /// 0: automatic, ceil(0.5 * mean path extent / mean diameter) windows (a body's box
+  /// grows by about two diameters per window; more windows cost more box work than the
+  /// few candidate pairs they save, measured on gas scenes).
   static constexpr std::size_t default_windows = 0;
   /// Upper limit of the automatic window count.
   static constexpr std::size_t max_auto_windows = 64;
