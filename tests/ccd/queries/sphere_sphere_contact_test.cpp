@@ -1,5 +1,6 @@
 #include <ccd/queries/sphere_sphere_contact.hpp>
 
+#include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -226,4 +227,48 @@ TEST_CASE("contact intervals agree with dense long double sampling", "[queries][
     }
   }
   CHECK(hits > 50);
+}
+
+TEST_CASE("random exact tangencies stay single points despite rounding of the data", "[queries][sphere]") {
+  // Tangent trajectories built from random frames: in exact arithmetic the centres come
+  // exactly R apart once, at s0. Rounding the data moves the minimum of f by O(eps) either
+  // way; without the tangency tolerance about half the cases come out as no contact and
+  // the other half as intervals ~sqrt(eps) wide. Required: one touching point within
+  // 1e-9 S of s0 (the issue's accuracy).
+  std::mt19937_64 rng(31337);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto unit = [&] {
+    Vec3 v;
+    do v = Vec3(u(rng), u(rng), u(rng)); while (v.norm() < 0.1);
+    return v.normalized();
+  };
+  const double S = 4.0;
+  for (int it = 0; it < 4000; ++it) {
+    const Vec3 e1 = unit();
+    const Vec3 e2 = e1.cross(unit()).normalized();
+    const double ra = 0.5 + 0.5 * (u(rng) + 1.0), rb = 0.1 + (u(rng) + 1.0);
+    const double R = ra + rb;
+    const double s0 = 0.5 + 1.5 * (u(rng) + 1.0);  // in [0.5, 3.5]
+    MovingSphere a = sphere(Vec3(u(rng), u(rng), u(rng)) * 10.0, Vec3(u(rng), u(rng), u(rng)) * 3.0, ra);
+    MovingSphere b = a;
+    b.radius = rb;
+    if (it % 2 == 0) {
+      // Linear: d(s) = e1 w (s - s0) + e2 R.
+      const double w = 0.5 + (u(rng) + 1.0);
+      b.position = a.position + e1 * (-w * s0) + e2 * R;
+      b.velocity = a.velocity + e1 * w;
+    } else {
+      // Quartic: d(s) = e1 g(s) + e2 R with g(s) = (k/2)(s - s0)(s - s1), s1 < 0.
+      const double k = 0.5 + (u(rng) + 1.0), s1 = -1.0 - (u(rng) + 1.0);
+      a.acceleration = Vec3(u(rng), u(rng), u(rng));
+      b.position = a.position + e1 * (0.5 * k * s0 * s1) + e2 * R;
+      b.velocity = a.velocity + e1 * (-0.5 * k * (s0 + s1));
+      b.acceleration = a.acceleration + e1 * k;
+    }
+    const auto set = ccd::sphere_sphere_contact_intervals(a, b, S);
+    INFO("case " << it);
+    REQUIRE(set.count == 1);
+    REQUIRE(set.intervals[0].lo == set.intervals[0].hi);
+    REQUIRE(set.intervals[0].lo == Approx(s0).margin(1e-9 * S));
+  }
 }

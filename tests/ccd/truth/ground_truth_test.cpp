@@ -51,13 +51,13 @@ TEST_CASE("compute_truth equals the all-pairs reference on random scenes", "[tru
                         {"acceleration changes", false, true, true, 0.0},
                         {"far from the origin (1e6)", true, true, true, 1e6}};
   for (const Case& c : cases) {
-    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       INFO(c.name << ", seed " << seed);
-      const Trajectories t(random_scene(seed, 70, c.gravity, c.own_acc, c.changes, c.offset));
+      const Trajectories t(random_scene(seed, 50, c.gravity, c.own_acc, c.changes, c.offset));
       const std::vector<ContactEvent> ref = ccd::compute_truth_all_pairs(t);
       REQUIRE(ref.size() > 5);  // the scenes are dense: a test that sees no contact proves nothing
-      for (unsigned threads : {1u, 2u, 3u}) {
-        for (std::size_t windows : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{40}}) {
+      for (unsigned threads : {1u, 3u}) {
+        for (std::size_t windows : {std::size_t{0}, std::size_t{7}, std::size_t{40}}) {
           INFO("threads " << threads << ", windows " << windows);
           const auto got = ccd::compute_truth(t, {threads, windows});
           REQUIRE(got == ref);  // bit for bit: the pair solve does not depend on the window
@@ -79,7 +79,7 @@ TEST_CASE("the reference agrees with dense sampling of the trajectories", "[trut
   // clear by a relative band of 1e-9 (far beyond rounding, far below any real gap).
   const Trajectories t(random_scene(11, 25, true, true, true, 0.0));
   const auto events = ccd::compute_truth_all_pairs(t);
-  const int samples = 4000;
+  const int samples = 1500;
   for (std::uint32_t a = 0; a < t.size(); ++a) {
     for (std::uint32_t b = a + 1; b < t.size(); ++b) {
       const long double R = static_cast<long double>(t.radius(a)) + t.radius(b);
