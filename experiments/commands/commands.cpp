@@ -6,9 +6,10 @@ namespace ccdlab {
 
 // Each command's entry point and texts live in its own file.
 extern const Command kTruthCommand;
+extern const Command kSceneCommand;
 
 std::span<const Command> commands() {
-  static const Command table[] = {kTruthCommand};
+  static const Command table[] = {kTruthCommand, kSceneCommand};
   return table;
 }
 
