@@ -3,8 +3,10 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -136,4 +138,24 @@ TEST_CASE("bad generator names and parameters are refused by name", "[generators
   CHECK_THROWS_WITH(make("gas", {{"bodies", -3}}), Catch::Matchers::StartsWith("parameter 'bodies': must be"));
   CHECK_THROWS_WITH(make("gas", {{"r_min", 2.0}}), "r_min (2) must be <= r_max (1.5)");
   CHECK_THROWS_AS(make("swarm", {{"regular", 2}}), std::invalid_argument);
+}
+
+TEST_CASE("docs/generators.md documents every generator's parameters and defaults", "[generators]") {
+  std::ifstream in(std::string(CCDLAB_SOURCE_DIR) + "/docs/generators.md");
+  REQUIRE(in);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string doc = ss.str();
+  for (const ccdlab::Generator& g : ccdlab::generators()) {
+    CAPTURE(g.name);
+    const std::size_t begin = doc.find("## `" + std::string(g.name) + "`");
+    REQUIRE(begin != std::string::npos);
+    const std::size_t end = doc.find("\n## ", begin + 1);
+    const std::string section = doc.substr(begin, end - begin);
+    for (const ccdlab::ParameterSpec& s : g.parameters) {
+      CAPTURE(s.name);
+      CHECK(section.find("| `" + std::string(s.name) + "` | " + ccdlab::format_number(s.default_value) + " |") !=
+            std::string::npos);
+    }
+  }
 }
