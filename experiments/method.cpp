@@ -8,7 +8,10 @@ MethodSpec parse_method(std::string_view name) {
   const auto slash = name.find('/');
   if (slash == std::string_view::npos || name.find('/', slash + 1) != std::string_view::npos) {
     std::string valid;
-    for (const std::string& m : all_method_names()) valid += (valid.empty() ? "" : ", ") + m;
+    for (const std::string& m : all_method_names()) {
+      if (!valid.empty()) valid += ", ";
+      valid += m;
+    }
     throw std::invalid_argument("method '" + std::string(name) +
                                 "' is not of the form BOUND/BROADPHASE; valid methods: " + valid);
   }
@@ -23,7 +26,10 @@ std::vector<std::string> all_method_names() {
   std::vector<std::string> out;
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string bound(b.name);
-    if (b.parameterised) bound += ":" + std::to_string(b.default_parameter);
+    if (b.parameterised) {
+      bound += ':';
+      bound += std::to_string(b.default_parameter);
+    }
     for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry()) out.push_back(bound + "/" + std::string(p.name));
   }
   return out;
