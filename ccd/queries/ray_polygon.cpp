@@ -1,6 +1,8 @@
 #include <ccd/queries/ray_plane.hpp>
 #include <ccd/queries/ray_polygon.hpp>
 
+#include <Eigen/Geometry>  // cross products
+
 #include <cmath>
 #include <limits>
 
