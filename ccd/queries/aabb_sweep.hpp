@@ -14,8 +14,8 @@
 // boxes that only touch (at one instant, or sliding face to face) are in contact.
 // Statuses: Overlapping (the boxes overlap or touch at t = 0: t_first = 0), Hit (first
 //   contact at t_first in (0, h]), Miss (no contact in [0, h]: t_first = +inf,
-//   t_last = -inf), Degenerate (h < 0 or NaN; h = +inf is allowed; a box with lo > hi, non-finite coordinates or
-//   velocities: t_first = +inf, t_last = -inf).
+//   t_last = -inf), Degenerate (h < 0 or NaN; h = +inf is allowed; a box with lo > hi, non-finite coordinates
+//   or velocities: t_first = +inf, t_last = -inf).
 // Guarantee: exact for the computed gaps and relative velocity (each difference is one
 // rounding, the quotient another); no tolerance is applied, so the result is exact for
 // inputs whose differences are representable (e.g. dyadic coordinates) and otherwise

@@ -1,7 +1,7 @@
 #include <ccd/geometry/aabb.hpp>
 
-#include <catch2/catch.hpp>
 #include <array>
+#include <catch2/catch.hpp>
 #include <random>
 
 using ccd::Aabb;
@@ -49,7 +49,8 @@ TEST_CASE("Aabb::overlaps uses closed intervals on every axis", "[geometry][aabb
     const Vec3 s(1e6, -1e6, 1e6);
     const Aabb far{a.lo + s, a.hi + s};
     CHECK(far.overlaps(Aabb{Vec3(1, 0, 0) + s, Vec3(2, 1, 1) + s}));
-    CHECK_FALSE(far.overlaps(Aabb{Vec3(std::nextafter(1e6 + 1, 2e6), -1e6, 1e6), Vec3(1e6 + 2, -1e6 + 1, 1e6 + 1)}));
+    CHECK_FALSE(
+        far.overlaps(Aabb{Vec3(std::nextafter(1e6 + 1, 2e6), -1e6, 1e6), Vec3(1e6 + 2, -1e6 + 1, 1e6 + 1)}));
   }
   SECTION("agrees with a per-axis interval test on random integer boxes") {
     std::mt19937_64 rng(1);

@@ -1,7 +1,7 @@
 #include <ccd/queries/aabb_sweep.hpp>
 
-#include <catch2/catch.hpp>
 #include <array>
+#include <catch2/catch.hpp>
 #include <limits>
 #include <random>
 
@@ -185,7 +185,8 @@ TEST_CASE("aabb_sweep equals brute force over exact sample times", "[queries][aa
     for (long k = 0; k <= 840; ++k) {
       bool overlap = true;
       for (int i = 0; i < 3; ++i) {
-        overlap = overlap && 840 * blo[i] + v[i] * k <= 840 * ahi[i] && 840 * alo[i] <= 840 * bhi[i] + v[i] * k;
+        overlap =
+            overlap && 840 * blo[i] + v[i] * k <= 840 * ahi[i] && 840 * alo[i] <= 840 * bhi[i] + v[i] * k;
       }
       if (overlap) {
         if (k_first < 0) k_first = k;

@@ -1,9 +1,9 @@
 #include <ccd/queries/ray_polygon.hpp>
 
 #include <Eigen/Geometry>
-#include <catch2/catch.hpp>
 #include <algorithm>
 #include <array>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -86,7 +86,8 @@ TEST_CASE("ray_polygon hand-worked hits", "[queries][ray_polygon]") {
       REQUIRE(r.status == RayPolygonStatus::Hit);
       CHECK(r.toi == 0.5);
       CHECK(ccd::ray_polygon(Vec3(1.5, 0.5, 2), Vec3(0, 0, -1), *poly, inf).status == RayPolygonStatus::Miss);
-      CHECK(ccd::ray_polygon(Vec3(0.5, -1e-9, 2), Vec3(0, 0, -1), *poly, inf).status == RayPolygonStatus::Miss);
+      CHECK(ccd::ray_polygon(Vec3(0.5, -1e-9, 2), Vec3(0, 0, -1), *poly, inf).status ==
+            RayPolygonStatus::Miss);
       CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 2), Vec3(0, 0, 1), *poly, inf).status == RayPolygonStatus::Miss);
       CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 2), Vec3(0, 0, -1), *poly, 1.5).status == RayPolygonStatus::Miss);
     }
@@ -96,7 +97,8 @@ TEST_CASE("ray_polygon hand-worked hits", "[queries][ray_polygon]") {
     const Vec3 c(-1, -1, -1);
     const Vec3 e1 = Vec3(1, -1, 0).normalized(), e2 = Vec3(1, 1, -2).normalized();
     std::vector<Vec3> pent;
-    for (int i = 0; i < 5; ++i) pent.push_back(c + 2 * (std::cos(2 * pi * i / 5) * e1 + std::sin(2 * pi * i / 5) * e2));
+    for (int i = 0; i < 5; ++i)
+      pent.push_back(c + 2 * (std::cos(2 * pi * i / 5) * e1 + std::sin(2 * pi * i / 5) * e2));
     // Along the normal from 3 units away: t = 3 (a few roundings at scale 3).
     const Vec3 nrm = Vec3(1, 1, 1).normalized();
     auto r = ccd::ray_polygon(c + 0.5 * e1 + 3 * nrm, -nrm, pent, inf);
@@ -131,9 +133,12 @@ TEST_CASE("ray_polygon degenerate cases", "[queries][ray_polygon]") {
   SECTION("fewer than 3 vertices, zero area, zero direction, invalid input") {
     const std::vector<Vec3> two{{0, 0, 0}, {1, 0, 0}};
     const std::vector<Vec3> line{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
-    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1), two, inf).status == RayPolygonStatus::Degenerate);
-    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1), line, inf).status == RayPolygonStatus::Degenerate);
-    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, 0), square, inf).status == RayPolygonStatus::Degenerate);
+    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1), two, inf).status ==
+          RayPolygonStatus::Degenerate);
+    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1), line, inf).status ==
+          RayPolygonStatus::Degenerate);
+    CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, 0), square, inf).status ==
+          RayPolygonStatus::Degenerate);
     CHECK(ccd::ray_polygon(Vec3(0.5, 0.5, 1), Vec3(0, 0, -1), square, -1.0).status ==
           RayPolygonStatus::Degenerate);
   }
@@ -195,7 +200,7 @@ TEST_CASE("ray_polygon is watertight: shared vertices and edges count exactly on
       const int n = 4 + rep % 8;
       const double lift = rep % 2 == 0 ? 0.0 : 0.15 * (U(rng) + 1);
       const auto tris = fan(apex, rot.col(0), rot.col(1), rot.col(2), n, 1.0, lift, rng);
-            for (int k = 0; k < 20; ++k) {
+      for (int k = 0; k < 20; ++k) {
         Vec3 dir = -rot.col(2) + 0.5 * U(rng) * rot.col(0) + 0.5 * U(rng) * rot.col(1);
         if (k % 2) dir = -dir;
         // Through the apex, or through a point on a shared spoke (apex + s (rim - apex)).
@@ -229,9 +234,15 @@ TEST_CASE("ray_polygon is watertight: shared vertices and edges count exactly on
         const Vec3 inner = centre + 0.3 * Vec3(U(rng), U(rng), U(rng));
         Vec3 through;
         switch (k % 3) {
-          case 0: through = v[k % 6]; break;                                     // a vertex
-          case 1: through = v[k % 2] + 0.5 * (v[2 + (k / 3) % 4] - v[k % 2]); break;  // an edge
-          default: through = centre + Vec3(U(rng), U(rng), U(rng)); break;       // anywhere
+          case 0:
+            through = v[k % 6];
+            break;  // a vertex
+          case 1:
+            through = v[k % 2] + 0.5 * (v[2 + (k / 3) % 4] - v[k % 2]);
+            break;  // an edge
+          default:
+            through = centre + Vec3(U(rng), U(rng), U(rng));
+            break;  // anywhere
         }
         const Vec3 dir = (inner - through).normalized();
         const Vec3 o = through - 5.0 * dir;

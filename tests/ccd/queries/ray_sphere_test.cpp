@@ -1,7 +1,7 @@
 #include <ccd/queries/ray_sphere.hpp>
 
-#include <catch2/catch.hpp>
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -172,7 +172,8 @@ TEST_CASE("ray_sphere degenerate cases", "[queries][ray_sphere]") {
     r = ccd::ray_sphere(Vec3(-5, 10, 0), Vec3(4, -3, 0), c, 5.0, inf);
     REQUIRE(r.status == RaySphereStatus::Hit);
     CHECK(r.toi == 2.0);
-    CHECK(r.normal == Vec3(0.6, 0.8, 0));
+    // The normal is p / R renormalised by a Newton step: unit within a few eps.
+    CHECK((r.normal - Vec3(0.6, 0.8, 0)).norm() <= 4 * eps);
   }
   SECTION("tangent in random directions: always a hit, t at the tangency point") {
     // The inputs are rounded, so the exact line passes within a few eps |m| of tangency:
@@ -267,6 +268,13 @@ TEST_CASE("ray_sphere degenerate cases", "[queries][ray_sphere]") {
     CHECK(r.toi == 2.0);
     CHECK(ccd::ray_sphere(Vec3(-2, 1e-3, 0), Vec3(1, 0, 0), c, 0.0, inf).status == RaySphereStatus::Miss);
   }
+  SECTION("tiny sphere (R = 1e-9 |m|): exact normalisation of the normal") {
+    const auto r = ccd::ray_sphere(Vec3(-1, 0.6e-9, 0), Vec3(1, 0, 0), c, 1e-9, inf);
+    REQUIRE(r.status == RaySphereStatus::Hit);
+    CHECK(r.toi == Approx(1 - 0.8e-9).epsilon(4 * eps));
+    CHECK(r.normal.norm() == Approx(1.0).epsilon(4 * eps));
+    CHECK(r.normal.x() == Approx(-0.8).epsilon(1e-6));  // toi error eps / R: 1e-7 relative
+  }
   SECTION("zero-length direction: degenerate outside, overlapping inside") {
     auto r = ccd::ray_sphere(Vec3(5, 0, 0), Vec3(0, 0, 0), c, 1.0, 1.0);
     CHECK(r.status == RaySphereStatus::Degenerate);
@@ -287,9 +295,12 @@ TEST_CASE("ray_sphere degenerate cases", "[queries][ray_sphere]") {
     CHECK(ccd::ray_sphere(Vec3(5, 0, 0), Vec3(-1, 0, 0), c, nan, 1.0).status == RaySphereStatus::Degenerate);
     CHECK(ccd::ray_sphere(Vec3(5, 0, 0), Vec3(-1, 0, 0), c, 1.0, -1.0).status == RaySphereStatus::Degenerate);
     CHECK(ccd::ray_sphere(Vec3(5, 0, 0), Vec3(-1, 0, 0), c, 1.0, nan).status == RaySphereStatus::Degenerate);
-    CHECK(ccd::ray_sphere(Vec3(nan, 0, 0), Vec3(-1, 0, 0), c, 1.0, 1.0).status == RaySphereStatus::Degenerate);
-    CHECK(ccd::ray_sphere(Vec3(5, 0, 0), Vec3(-inf, 0, 0), c, 1.0, 1.0).status == RaySphereStatus::Degenerate);
-    CHECK(ccd::ray_sphere(Vec3(1e200, 0, 0), Vec3(-1, 0, 0), c, 1.0, 1.0).status == RaySphereStatus::Degenerate);
+    CHECK(ccd::ray_sphere(Vec3(nan, 0, 0), Vec3(-1, 0, 0), c, 1.0, 1.0).status ==
+          RaySphereStatus::Degenerate);
+    CHECK(ccd::ray_sphere(Vec3(5, 0, 0), Vec3(-inf, 0, 0), c, 1.0, 1.0).status ==
+          RaySphereStatus::Degenerate);
+    CHECK(ccd::ray_sphere(Vec3(1e200, 0, 0), Vec3(-1, 0, 0), c, 1.0, 1.0).status ==
+          RaySphereStatus::Degenerate);
   }
   SECTION("far from the origin (~1e6): matches the long double reference") {
     // Same geometry as the off-axis case, shifted by ~1e6 in every coordinate. The shift
@@ -376,6 +387,10 @@ TEST_CASE("ray_sphere against a long double reference on 1e5 random rays", "[que
       }
       continue;
     }
+    if (r.status == RaySphereStatus::Hit) {
+      // Unit normal: |p|/R - 1 <= ~60 eps |m| / R and one Newton step squares it.
+      CHECK(std::abs(r.normal.norm() - 1.0) <= 8 * eps);
+    }
     if (r.status == RaySphereStatus::Hit && !band && ref.toi > 0) {
       ++hits;
       const double err = std::abs(r.toi - static_cast<double>(ref.toi));
@@ -386,9 +401,10 @@ TEST_CASE("ray_sphere against a long double reference on 1e5 random rays", "[que
       CHECK(norm <= 1.0);
     }
   }
-  std::printf("ray_sphere random: %d cases, %d in band (%d differ there), %d hits checked, "
-              "max rel toi error %.3g, max error / derived bound %.3g\n",
-              cases, in_band, band_differences, hits, max_rel, max_norm);
+  std::printf(
+      "ray_sphere random: %d cases, %d in band (%d differ there), %d hits checked, "
+      "max rel toi error %.3g, max error / derived bound %.3g\n",
+      cases, in_band, band_differences, hits, max_rel, max_norm);
   CHECK(differences == 0);
   CHECK(hits > cases / 5);  // the generator really produces hits outside the band
 }
