@@ -1,6 +1,7 @@
 #include <ccd/broad_phase/sap.hpp>
 
 #include <algorithm>
+#include <bit>
 
 namespace ccd {
 
@@ -54,6 +55,7 @@ void SweepAndPrune::rebuild(std::span<const Aabb> boxes) {
     if ((p.id & 1u) == 0) scratch_.push_back(p.id >> 1);
   const double* bd = bounds_[axis_].data();
   pairs_.clear(pairs_.size());
+  degree_.assign(n, 0);
   std::uint64_t tests = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const std::uint32_t i = scratch_[k];
@@ -61,7 +63,11 @@ void SweepAndPrune::rebuild(std::span<const Aabb> boxes) {
     for (std::size_t l = k + 1; l < n && bd[2 * scratch_[l]] <= hi; ++l) {
       const std::uint32_t j = scratch_[l];
       ++tests;
-      if (boxes[i].overlaps(boxes[j])) pairs_.insert(std::min(i, j), std::max(i, j));
+      if (boxes[i].overlaps(boxes[j])) {
+        pairs_.insert(std::min(i, j), std::max(i, j));  // met once: always new
+        ++degree_[i];
+        ++degree_[j];
+      }
     }
   }
   stats_.box_tests += tests;
@@ -73,14 +79,14 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
   const double* bd = bounds_[axis].data();
   const std::size_t m = endpoints_[axis].size();
   std::uint64_t swaps = stats_.swaps, tests = 0;
-  if (m > 0) e[0].value = bd[e[0].id];
-  // Insertion sort, the gather of this frame's values fused in: e[0..k) is sorted when
-  // e[k] is loaded. Key (value, is_end): an end moves left past y while value < y.value;
+  // This frame's values in the kept order: a separate gather pass (independent loads)
+  // is faster than loading each value inside the insertion sort.
+  for (std::size_t k = 0; k < m; ++k) e[k].value = bd[e[k].id];
+  // Insertion sort. Key (value, is_end): an end moves left past y while value < y.value;
   // a start also past an end of equal value (starts before ends at ties).
   for (std::size_t k = 1; k < m; ++k) {
     const std::uint32_t id = e[k].id;
-    const double v = bd[id];
-    e[k].value = v;
+    const double v = e[k].value;
     const double prev = e[k - 1].value;
     std::size_t j = k;
     if (id & 1u) {
@@ -92,7 +98,11 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
         const Endpoint y = e[j - 1];
         if ((y.id & 1u) == 0) {
           const std::uint32_t b = y.id >> 1;
-          pairs_.erase(std::min(a, b), std::max(a, b));
+          // Only a pair of two bodies that both have pairs can be a member.
+          if ((degree_[a] != 0) & (degree_[b] != 0) && pairs_.erase(std::min(a, b), std::max(a, b))) {
+            --degree_[a];
+            --degree_[b];
+          }
         }
         e[j] = y;
         --j;
@@ -108,7 +118,10 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
         if (y.id & 1u) {
           const std::uint32_t b = y.id >> 1;
           ++tests;
-          if (ba.overlaps(boxes[b])) pairs_.insert(std::min(a, b), std::max(a, b));
+          if (ba.overlaps(boxes[b]) && pairs_.insert(std::min(a, b), std::max(a, b))) {
+            ++degree_[a];
+            ++degree_[b];
+          }
         }
         e[j] = y;
         --j;
@@ -136,7 +149,10 @@ void SweepAndPrune::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair
     stats_.rebuilt = true;
   } else {
     load_bounds(boxes);
-    const std::uint64_t budget = options_.swaps_per_endpoint * 6 * n + 64;
+    // A rebuild sorts 6n endpoints: O(n log n); beyond a multiple of that in swaps,
+    // rebuilding is cheaper than finishing the insertion sorts.
+    const std::uint64_t budget =
+        options_.swaps_per_endpoint * 6 * n * static_cast<std::uint64_t>(std::bit_width(2 * n)) + 64;
     for (int a = 0; a < 3; ++a) {
       if (!update_axis(a, boxes, budget)) {
         rebuild(boxes);  // the swaps and tests spent so far stay counted

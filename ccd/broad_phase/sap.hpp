@@ -40,9 +40,11 @@
 namespace ccd {
 
 struct SapOptions {
-  /// Swap budget per endpoint per frame (all three axes together) before the insertion
-  /// sort gives up and the structure is rebuilt: budget = swaps_per_endpoint * 6n + 64.
-  static constexpr std::uint64_t kSwapsPerEndpoint = 8;
+  /// Swap budget per frame (all three axes together) before the insertion sorts give up
+  /// and the structure is rebuilt: swaps_per_endpoint * 6n * bit_width(2n) + 64, i.e. a
+  /// multiple of the O(n log n) cost of a rebuild. A complete reversal of the order on
+  /// one axis ((2n)^2 / 2 swaps) exceeds it from n ~ 100.
+  static constexpr std::uint64_t kSwapsPerEndpoint = 2;
   std::uint64_t swaps_per_endpoint = kSwapsPerEndpoint;
 };
 
@@ -70,6 +72,7 @@ class SweepAndPrune final : public BroadPhase {
   std::array<std::vector<Endpoint>, 3> endpoints_;  // per axis, sorted by (value, is_end)
   std::array<std::vector<double>, 3> bounds_;       // per axis: [2i] = lo_i, [2i + 1] = hi_i
   std::vector<std::uint32_t> scratch_;              // rebuild: bodies by start
+  std::vector<std::uint32_t> degree_;               // per body: its pairs in the set
   PairSet pairs_;
   BroadPhaseStats stats_;
 };
