@@ -92,36 +92,47 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
     if (id & 1u) {
       if (!(v < prev)) continue;
       // End of body a moving left past y: if y is a start of body b, the pair stops
-      // overlapping on this axis (it overlapped before: start_b was before end_a).
+      // overlapping on this axis (it overlapped before: start_b was before end_a). Only
+      // a pair of two bodies that both have pairs can be a member: most ends move with
+      // no check at all.
       const std::uint32_t a = id >> 1;
-      do {
-        const Endpoint y = e[j - 1];
-        if ((y.id & 1u) == 0) {
+      if (degree_[a] == 0) {
+        do {
+          e[j] = e[j - 1];
+          --j;
+        } while (j > 0 && v < e[j - 1].value);
+      } else {
+        do {
+          const Endpoint y = e[j - 1];
           const std::uint32_t b = y.id >> 1;
-          // Only a pair of two bodies that both have pairs can be a member.
-          if ((degree_[a] != 0) & (degree_[b] != 0) && pairs_.erase(std::min(a, b), std::max(a, b))) {
+          if (((y.id & 1u) == 0) & (degree_[b] != 0) && pairs_.erase(std::min(a, b), std::max(a, b))) {
             --degree_[a];
             --degree_[b];
           }
-        }
-        e[j] = y;
-        --j;
-      } while (j > 0 && v < e[j - 1].value);
+          e[j] = y;
+          --j;
+        } while (j > 0 && v < e[j - 1].value);
+      }
     } else {
       if (!(v < prev || (v == prev && (e[k - 1].id & 1u)))) continue;
       // Start of body a moving left past y: if y is an end of body b, the pair starts to
-      // overlap on this axis; test this frame's boxes on all three axes.
+      // overlap on this axis; test this frame's boxes on all three axes. The test is made
+      // for every y, without branches, and masked by "y is an end": the type of y is
+      // unpredictable, a hit is rare.
       const std::uint32_t a = id >> 1;
       const Aabb& ba = boxes[a];
+      const double lx = ba.lo.x(), ly = ba.lo.y(), lz = ba.lo.z();
+      const double hx = ba.hi.x(), hy = ba.hi.y(), hz = ba.hi.z();
       do {
         const Endpoint y = e[j - 1];
-        if (y.id & 1u) {
-          const std::uint32_t b = y.id >> 1;
-          ++tests;
-          if (ba.overlaps(boxes[b]) && pairs_.insert(std::min(a, b), std::max(a, b))) {
-            ++degree_[a];
-            ++degree_[b];
-          }
+        const std::uint32_t b = y.id >> 1;
+        const Aabb& bb = boxes[b];
+        tests += y.id & 1u;
+        const bool hit = (y.id & 1u) & (lx <= bb.hi.x()) & (bb.lo.x() <= hx) & (ly <= bb.hi.y()) &
+                         (bb.lo.y() <= hy) & (lz <= bb.hi.z()) & (bb.lo.z() <= hz);
+        if (hit && pairs_.insert(std::min(a, b), std::max(a, b))) {
+          ++degree_[a];
+          ++degree_[b];
         }
         e[j] = y;
         --j;
