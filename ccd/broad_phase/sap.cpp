@@ -84,7 +84,11 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
   for (std::size_t k = 0; k < m; ++k) e[k].value = bd[e[k].id];
   // Insertion sort. Key (value, is_end): an end moves left past y while value < y.value;
   // a start also past an end of equal value (starts before ends at ties).
+  constexpr std::size_t kAhead = 16;  // prefetch distance, in endpoints
   for (std::size_t k = 1; k < m; ++k) {
+    // A moving start reads its body's box, in random order: fetch it ahead (past the
+    // cache for large n, this load was ~40% of the time at n = 1e5).
+    if (k + kAhead < m) __builtin_prefetch(&boxes[e[k + kAhead].id >> 1]);
     const std::uint32_t id = e[k].id;
     const double v = e[k].value;
     const double prev = e[k - 1].value;
