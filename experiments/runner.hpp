@@ -54,7 +54,7 @@ struct RunRecord {
   double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
   double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
   double seconds_per_simulated_second = 0.0;
-  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap only)
+  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap, sweep; else 0)
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   bool counts_stable = true;           ///< identical counts over all repeats
