@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <string_view>
 #include <vector>
 
 namespace ccdlab {
@@ -45,8 +46,10 @@ class StateCursor {
 
 struct Counts {
   std::uint64_t candidates = 0, bound_candidates = 0, confirmed = 0, false_positives = 0, swaps = 0;
+  std::uint64_t rebuilds = 0;  // sap only: frames that rebuilt the order from scratch
   std::uint64_t unexpected = 0;
   double bound_s = 0, broad_s = 0, narrow_s = 0, total_s = 0;
+  double first_broad_s = 0;  // the broad phase at the first step (sap: the initial sort)
   std::vector<double> lag, penetration;  // per event; NaN = not detected
   bool operator==(const Counts& o) const {
     auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
@@ -56,7 +59,8 @@ struct Counts {
       return true;
     };
     return candidates == o.candidates && bound_candidates == o.bound_candidates && confirmed == o.confirmed &&
-           false_positives == o.false_positives && unexpected == o.unexpected && same(lag, o.lag);
+           false_positives == o.false_positives && unexpected == o.unexpected && swaps == o.swaps &&
+           rebuilds == o.rebuilds && same(lag, o.lag);
   }
 };
 
@@ -70,6 +74,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
 
   auto bound = method.bound.make();
   auto broad = method.broad_phase->make();
+  const bool is_sap = std::string_view(method.broad_phase->name) == "sap";
   std::vector<ccd::BodyState> states;
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs, passed;
@@ -113,8 +118,11 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
 
     t = Clock::now();
     broad->find_pairs(boxes, pairs);
-    c.broad_s += seconds_since(t);
+    const double broad_step_s = seconds_since(t);
+    c.broad_s += broad_step_s;
+    if (k == 0) c.first_broad_s = broad_step_s;
     c.swaps += broad->stats().swaps;
+    if (is_sap && broad->stats().rebuilt) ++c.rebuilds;
     c.candidates += pairs.size();
 
     // The bound's own test over all broad-phase pairs, then the exact narrow phase over
@@ -238,15 +246,18 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.false_positives = c.false_positives;
   r.sap_swaps = c.swaps;
   r.self_check_unexpected = c.unexpected;
-  std::vector<double> b, br, n, t;
+  r.sap_rebuilds = c.rebuilds;
+  std::vector<double> b, br, fb, n, t;
   for (const Counts& o : runs) {
     b.push_back(o.bound_s);
     br.push_back(o.broad_s);
+    fb.push_back(o.first_broad_s);
     n.push_back(o.narrow_s);
     t.push_back(o.total_s);
   }
   r.bound_seconds = median(b);
   r.broad_seconds = median(br);
+  r.first_broad_seconds = median(fb);
   r.narrow_seconds = median(n);
   r.total_seconds = median(t);
   r.seconds_per_simulated_second = r.total_seconds / T;
@@ -280,7 +291,9 @@ nlohmann::json to_json(const RunRecord& r) {
           {"narrow_seconds", r.narrow_seconds},
           {"total_seconds", r.total_seconds},
           {"seconds_per_simulated_second", r.seconds_per_simulated_second},
+          {"first_broad_seconds", r.first_broad_seconds},
           {"sap_swaps", r.sap_swaps},
+          {"sap_rebuilds", r.sap_rebuilds},
           {"self_check",
            {{"ok", r.self_check_unexpected == 0 && r.self_check_undetected == 0 && r.counts_stable},
             {"unexpected_contacts", r.self_check_unexpected},
