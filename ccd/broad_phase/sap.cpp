@@ -1,4 +1,5 @@
 #include <ccd/broad_phase/sap.hpp>
+#include <ccd/broad_phase/variance_axis.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -20,19 +21,7 @@ void SweepAndPrune::load_bounds(std::span<const Aabb> boxes) {
 void SweepAndPrune::rebuild(std::span<const Aabb> boxes) {
   const std::size_t n = boxes.size();
   load_bounds(boxes);
-  // Sweep axis: largest variance of the box centres (Welford: no s2 - s^2/n cancellation).
-  double mean[3] = {0, 0, 0}, m2[3] = {0, 0, 0};
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int a = 0; a < 3; ++a) {
-      const double c = 0.5 * boxes[i].lo[a] + 0.5 * boxes[i].hi[a];
-      const double d = c - mean[a];
-      mean[a] += d / static_cast<double>(i + 1);
-      m2[a] += d * (c - mean[a]);
-    }
-  }
-  axis_ = 0;
-  for (int a = 1; a < 3; ++a)
-    if (m2[a] > m2[axis_]) axis_ = a;
+  axis_ = largest_variance_axis(boxes);  // Welford, robust far from the origin
 
   // Endpoint lists, sorted by (value, is_end); the id breaks the remaining ties so the
   // order is a function of the boxes alone.
