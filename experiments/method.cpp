@@ -23,7 +23,11 @@ std::vector<std::string> all_method_names() {
   std::vector<std::string> out;
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string bound(b.name);
-    if (b.parameterised) bound += ":" + std::to_string(b.default_parameter);
+    if (b.parameterised) {
+      // Two appends, not ":" + to_string(): GCC 12 warns falsely (-Wrestrict) on the latter.
+      bound += ':';
+      bound += std::to_string(b.default_parameter);
+    }
     for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry()) out.push_back(bound + "/" + std::string(p.name));
   }
   return out;
