@@ -8,7 +8,10 @@ MethodSpec parse_method(std::string_view name) {
   const auto slash = name.find('/');
   if (slash == std::string_view::npos || name.find('/', slash + 1) != std::string_view::npos) {
     std::string valid;
-    for (const std::string& m : all_method_names()) valid += (valid.empty() ? "" : ", ") + m;
+    for (const std::string& m : all_method_names()) {
+      if (!valid.empty()) valid += ", ";
+      valid += m;
+    }
     throw std::invalid_argument("method '" + std::string(name) +
                                 "' is not of the form BOUND/BROADPHASE; valid methods: " + valid);
   }
@@ -24,7 +27,6 @@ std::vector<std::string> all_method_names() {
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string bound(b.name);
     if (b.parameterised) {
-      // Two appends, not ":" + to_string(): GCC 12 warns falsely (-Wrestrict) on the latter.
       bound += ':';
       bound += std::to_string(b.default_parameter);
     }

@@ -7,11 +7,12 @@ namespace ccdlab {
 // Each command's entry point and texts live in its own file.
 extern const Command kRunCommand;
 extern const Command kTruthCommand;
+extern const Command kSceneCommand;
 extern const Command kMethodsCommand;
 extern const Command kMergeCommand;
 
 std::span<const Command> commands() {
-  static const Command table[] = {kRunCommand, kTruthCommand, kMethodsCommand, kMergeCommand};
+  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand};
   return table;
 }
 

@@ -1,0 +1,91 @@
+#include <ccd/truth/pair_contact.hpp>
+
+#include <ccd/queries/sphere_sphere_contact.hpp>
+
+#include <algorithm>
+#include <cassert>
+#include <limits>
+
+namespace ccd {
+namespace {
+
+MovingSphere sphere_at(const Piece& q, double t, double radius) {
+  return {q.position(t), q.velocity(t), q.a, radius};
+}
+
+// Calls visit(enter, exit) for every contact interval of the pair on each common piece
+// that overlaps [u0, u1], in time order, clipped to [u0, u1]. visit returns false to stop.
+template <class Visit>
+void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double u0, double u1,
+                             Visit&& visit) {
+  assert(a < traj.size() && b < traj.size() && a != b);
+  if (!(u1 >= u0)) return;
+  const auto pa = traj.pieces(a);
+  const auto pb = traj.pieces(b);
+  auto first_ending_after = [u0](std::span<const Piece> ps) {
+    auto it = std::lower_bound(ps.begin(), ps.end(), u0, [](const Piece& q, double x) { return q.t1 < x; });
+    return static_cast<std::size_t>(it - ps.begin());
+  };
+  std::size_t ia = first_ending_after(pa);
+  std::size_t ib = first_ending_after(pb);
+  const double ra = traj.radius(a), rb = traj.radius(b);
+  while (ia < pa.size() && ib < pb.size()) {
+    const Piece& qa = pa[ia];
+    const Piece& qb = pb[ib];
+    const double c0 = std::max(qa.t0, qb.t0);
+    const double c1 = std::min(qa.t1, qb.t1);
+    if (c0 > u1) return;
+    if (c1 >= c0 && c1 >= u0) {
+      const SublevelSet set =
+          sphere_sphere_contact_intervals(sphere_at(qa, c0, ra), sphere_at(qb, c0, rb), c1 - c0);
+      const double S = c1 - c0;
+      for (int k = 0; k < set.count; ++k) {
+        const RootInterval& iv = set.intervals[k];
+        double enter = iv.lo <= 0.0 ? c0 : std::min(c0 + iv.lo, c1);
+        double exit = iv.hi >= S ? c1 : std::min(c0 + iv.hi, c1);
+        if (exit < u0 || enter > u1) continue;
+        enter = std::max(enter, u0);
+        exit = std::min(exit, u1);
+        if (!visit(enter, exit)) return;
+      }
+    }
+    if (qa.t1 < qb.t1) {
+      ++ia;
+    } else if (qb.t1 < qa.t1) {
+      ++ib;
+    } else {
+      ++ia;
+      ++ib;
+    }
+  }
+}
+
+}  // namespace
+
+double merge_gap(double horizon) { return 16.0 * std::numeric_limits<double>::epsilon() * horizon; }
+
+void pair_contact_intervals(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double u0, double u1,
+                            std::vector<ContactInterval>& out) {
+  const std::size_t first = out.size();
+  const double gap = merge_gap(traj.horizon());
+  for_each_piece_interval(traj, a, b, u0, u1, [&](double enter, double exit) {
+    if (out.size() > first && enter <= out.back().exit + gap) {
+      out.back().exit = std::max(out.back().exit, exit);
+    } else {
+      out.push_back({enter, exit});
+    }
+    return true;
+  });
+}
+
+std::optional<double> pair_first_contact(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double u0,
+                                         double u1) {
+  std::optional<double> result;
+  for_each_piece_interval(traj, a, b, u0, u1, [&](double enter, double) {
+    result = enter;
+    return false;
+  });
+  return result;
+}
+
+}  // namespace ccd

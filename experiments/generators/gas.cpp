@@ -1,0 +1,48 @@
+// `gas`: spheres in a box moving in straight lines (no gravity, elastic walls).
+#include <experiments/generators/registry.hpp>
+#include <experiments/generators/sampling.hpp>
+
+namespace ccdlab {
+namespace {
+
+constexpr ParameterSpec kParameters[] = {
+    kSeedParameter,
+    kBodiesParameter,
+    kHorizonParameter,
+    kOffsetParameter,
+    {"r_min", 0.5, "smallest radius (radii uniform in [r_min, r_max])", ParameterKind::Real, kPositiveLength},
+    {"r_max", 1.5, "largest radius", ParameterKind::Real, kPositiveLength},
+    {"speed_max", 10.0, "speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
+     kNonNegativeRate},
+    {"fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
+     kVolumeFraction},
+};
+
+ccd::Scene generate_gas(const GeneratorParameters& p) {
+  require_not_greater(p, "r_min", "r_max");
+  const double r_min = p.number("r_min");
+  const double r_max = p.number("r_max");
+  const double speed_max = p.number("speed_max");
+  const std::size_t n = p.integer("bodies");
+  const double side = cube_side(n, mean_cube_uniform(r_min, r_max), p.number("fraction"), r_max);
+
+  ccd::Scene scene;
+  scene.horizon = p.number("horizon");
+  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
+  scene.bodies.resize(n);
+  Random rng(p.integer("seed"));
+  for (ccd::Body& b : scene.bodies) {
+    b.radius = rng.uniform(r_min, r_max);
+    b.position = rng.position_in_cube(side, b.radius);
+    b.velocity = rng.velocity(speed_max);
+  }
+  return scene;
+}
+
+}  // namespace
+
+extern const Generator kGasGenerator = {
+    "gas", "spheres in a box [0, L]^3, straight-line motion, elastic walls, no gravity", kParameters,
+    generate_gas};
+
+}  // namespace ccdlab
