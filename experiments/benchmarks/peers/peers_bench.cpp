@@ -120,7 +120,6 @@ RunResult run_child(const PeerInfo& info, std::size_t n, const std::vector<Frame
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs;
   scene.boxes(boxes);
-  pairs.reserve(1);
   {  // reset the peak resident set to the current one (Linux >= 4.0)
     std::ofstream clear("/proc/self/clear_refs");
     clear << "5";
