@@ -2,6 +2,8 @@
 
 #include "commands/command.hpp"
 
+#include <ccdlab_git_hash.hpp>
+
 #include <fstream>
 #include <string>
 #include <sys/resource.h>

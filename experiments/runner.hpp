@@ -51,10 +51,13 @@ struct RunRecord {
   double max_lag = 0.0;
   double bound_seconds = 0.0;          ///< bound prepare + bound pair tests (median of repeats)
   double broad_seconds = 0.0;          ///< broad phase (median of repeats)
+  double first_broad_seconds = 0.0;    ///< broad phase at the first step alone (sap: its initial sort)
   double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
   double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
   double seconds_per_simulated_second = 0.0;
-  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap only)
+  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap, sweep; else 0)
+  std::uint64_t rebuilds = 0;          ///< steps at which the broad phase built its structure from scratch
+                                       ///< (every step for brute, grid, hgrid, rtree)
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   bool counts_stable = true;           ///< identical counts over all repeats

@@ -102,6 +102,7 @@ def line_chart(res, outdir, formats, stem, key, ylabel, methods=None, yscale="sy
     if yscale == "symlog":
         ys = [key(r) for r in res["records"] if key(r) > 0]
         ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
+        ax.set_ylim(bottom=0)
     else:
         ax.set_yscale(yscale)
     ax.set_xlabel("timestep dt (s)")
@@ -137,6 +138,7 @@ def speed_accuracy(res, outdir, formats):
     ax.set_xscale("log")
     ys = [p[1] for p in pts if p[1] > 0]
     ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
+    ax.set_ylim(bottom=0)
     ax.set_xlabel("cost (seconds of computation per simulated second)")
     ax.set_ylabel("missed fraction of contact events")
     return finish(fig, ax, res, outdir, "speed_accuracy", formats)

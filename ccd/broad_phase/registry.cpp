@@ -5,6 +5,7 @@
 #include <ccd/broad_phase/hgrid.hpp>
 #include <ccd/broad_phase/rtree.hpp>
 #include <ccd/broad_phase/sap.hpp>
+#include <ccd/broad_phase/sort_sweep.hpp>
 
 #include <stdexcept>
 #include <string>
@@ -20,8 +21,9 @@ std::unique_ptr<BroadPhase> make() {
 
 constexpr BroadPhaseInfo kBroadPhases[] = {
     {"brute", "all pairs, O(n^2): the reference", &make<BruteForce>},
-    {"sap", "sweep and prune: insertion-sorted starts kept between frames, one sweep axis",
+    {"sap", "sweep and prune (I-COLLIDE): endpoint lists on 3 axes kept between frames, pair set updated from swaps",
      &make<SweepAndPrune>},
+    {"sweep", "sort and sweep: coherent insertion sort of starts, re-swept every frame", &make<SortAndSweep>},
     {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil", &make<UniformGrid>},
     {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", &make<HierarchicalGrid>},
     {"rtree", "Boost.Geometry R-tree (quadratic, 16), bulk-loaded per frame: library baseline",

@@ -1,5 +1,7 @@
 #include "command.hpp"
 
+#include <ccdlab_git_hash.hpp>
+
 #include <algorithm>
 
 namespace ccdlab {

@@ -4,8 +4,11 @@
 #include <ccd/scene/scene_io.hpp>
 #include <experiments/generators/registry.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace ccdlab {
 namespace {

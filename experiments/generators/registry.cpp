@@ -15,10 +15,11 @@ extern const Generator kBulletsGenerator;
 extern const Generator kSwarmGenerator;
 extern const Generator kLatticeGenerator;
 extern const Generator kMixedGenerator;
+extern const Generator kGrazingGenerator;
 
 std::span<const Generator> generators() {
-  static const Generator table[] = {kGasGenerator,     kRainGenerator,    kBulletsGenerator,
-                                    kSwarmGenerator,   kLatticeGenerator, kMixedGenerator};
+  static const Generator table[] = {kGasGenerator,     kRainGenerator,    kBulletsGenerator, kSwarmGenerator,
+                                    kLatticeGenerator, kMixedGenerator,   kGrazingGenerator};
   return table;
 }
 

@@ -129,3 +129,17 @@ TEST_CASE("counts do not depend on the thread count; shards merge into the whole
     CHECK_FALSE(fs::exists(dir.path / "bad.json"));
   }
 }
+
+TEST_CASE("Ctrl-C leaves no results file and exits with 130", "[run][cli]") {
+  const TempDir dir;
+  const std::string out = (dir.path / "interrupted.json").string();
+  // The default experiment runs for many seconds: interrupt it after half a second.
+  const std::string cmd = "sh -c '" + std::string(CCDLAB_BINARY) + " run " + CCDLAB_SOURCE_DIR +
+                          "/data/experiments/default.json --quiet -o " + out +
+                          " 2>/dev/null & p=$!; sleep 0.5; kill -INT $p; wait $p'";
+  const int rc = std::system(cmd.c_str());
+  CHECK(WIFEXITED(rc));
+  CHECK(WEXITSTATUS(rc) == 130);
+  CHECK_FALSE(fs::exists(out));
+  for (const auto& f : fs::directory_iterator(dir.path)) CHECK(f.path().filename().string().find(".tmp.") == std::string::npos);
+}

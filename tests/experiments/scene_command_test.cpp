@@ -137,8 +137,8 @@ TEST_CASE("ccdlab scene reports an unwritable output as a runtime failure", "[ge
   CHECK(r.err.find("no-such-folder") != std::string::npos);
 }
 
-TEST_CASE("data/scenes/default.json is the gas scene of 2000 bodies, seed 7, horizon 1", "[generators]") {
+TEST_CASE("data/scenes/default.json is the gas scene of 2000 bodies, seed 7, horizon 1, speeds up to 40", "[generators]") {
   const ccd::Scene stored = ccd::load_scene(std::string(CCDLAB_SOURCE_DIR) + "/data/scenes/default.json");
-  const ccd::Scene expected = ccdlab::generate_scene("gas", json{{"bodies", 2000}, {"seed", 7}, {"horizon", 1}});
+  const ccd::Scene expected = ccdlab::generate_scene("gas", json{{"bodies", 2000}, {"seed", 7}, {"horizon", 1}, {"speed_max", 40}});
   CHECK(ccd::scene_to_json(stored) == ccd::scene_to_json(expected));
 }

@@ -1,0 +1,472 @@
+#!/usr/bin/python3
+"""Charts and a summary table of one stability study (docs/studies.md), combining the
+results files of its experiments (ccdlab-results/1).
+
+usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--format png,svg]
+                                              [--ccdlab PATH]
+
+STUDY is one of: tunnelling, sap-coherence, equal-endpoints, grazing, precision,
+bound-violation, mixed-sizes, scaling. Draws STUDY-*.{png,...} into DIR (default
+results/studies/STUDY/plots), prints a Markdown summary of the key numbers on standard
+output, then each chart's path. Results files may come in any order: each study sorts
+them by its own variable (N, offset, ratio...), read from the results themselves.
+equal-endpoints also regenerates each lattice scene with `ccdlab scene` (--ccdlab, default
+build/ccdlab) to count the box pairs that closed and strict comparisons report.
+Reads results only (and writes scenes to a temporary folder); exits with status 2 on bad input.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot  # noqa: E402  (sets the Agg backend)
+import matplotlib.pyplot as plt  # noqa: E402
+
+STUDIES = ("tunnelling", "sap-coherence", "equal-endpoints", "grazing", "precision",
+           "bound-violation", "mixed-sizes", "scaling")
+
+
+def fail(msg):
+    print(f"plot_study.py: {msg}", file=sys.stderr)
+    sys.exit(2)
+
+
+def source(res):
+    """The generator parameters of the results' scene ({} for a scene file)."""
+    s = res["scene"].get("source")
+    return s if isinstance(s, dict) else {}
+
+
+def per_step(r, key):
+    return r[key] / r["steps"] if r["steps"] else 0.0
+
+
+def save(fig, outdir, stem, formats):
+    fig.tight_layout()
+    paths = []
+    for fmt in formats:
+        p = os.path.join(outdir, f"{stem}.{fmt}")
+        fig.savefig(p, dpi=100)
+        paths.append(p)
+    plt.close(fig)
+    return paths
+
+
+def legend(ax, **kw):
+    ax.legend(fontsize=8, frameon=False, **kw)
+
+
+def dts(res):
+    return sorted({r["dt"] for r in res["records"]}, reverse=True)
+
+
+def fmt_dt(dt):
+    return f"{dt:.3g}"
+
+
+def method_order(results):
+    names = []
+    for res in results:
+        for r in res["records"]:
+            if r["method"] not in names:
+                names.append(r["method"])
+    return names
+
+
+def record(res, method, dt):
+    for r in res["records"]:
+        if r["method"] == method and r["dt"] == dt:
+            return r
+    return None
+
+
+def self_check_line(results):
+    bad = [(res["experiment"]["name"], r["method"], r["dt"]) for res in results for r in res["records"]
+           if not r["self_check"]["ok"]]
+    unexpected = sum(r["self_check"]["unexpected_contacts"] for res in results for r in res["records"])
+    undetected = sum(r["self_check"]["undetected_sampled_events"] for res in results for r in res["records"])
+    return (f"self-check: {len(bad)} record(s) not ok; unexpected contacts {unexpected}, "
+            f"undetected sampled events {undetected}")
+
+
+# ---------------------------------------------------------------------------- tunnelling
+
+def tunnelling(results, outdir, formats):
+    res = results[0]
+    out = [f"### tunnelling: {plot.title(res)}", "",
+           "missed events per method (columns: dt, s)", ""]
+    ds = dts(res)
+    out.append("| method | conservative | " + " | ".join(fmt_dt(d) for d in ds) + " |")
+    out.append("|---|---|" + "---|" * len(ds))
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for i, (name, rs) in enumerate(plot.by_method(res["records"]).items()):
+        cont = rs[0]["continuous"]
+        ax.plot([r["dt"] for r in rs], [r["missed"] for r in rs], label=name, linewidth=1.3, markersize=4,
+                linestyle="-" if cont else "--", **plot.style(i))
+        row = {r["dt"]: r["missed"] for r in rs}
+        out.append(f"| {name} | {'yes' if rs[0]['conservative'] and cont else 'no'} | "
+                   + " | ".join(str(row.get(d, "")) for d in ds) + " |")
+    ax.set_xscale("log")
+    ax.set_yscale("symlog", linthresh=1)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("timestep dt (s)")
+    ax.set_ylabel("missed contact events")
+    ax.set_title(f"tunnelling: {res['truth']['events']} events; dashed: discrete", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    legend(ax, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, "tunnelling-missed-events", formats)
+
+
+# ---------------------------------------------------------------------------- sap-coherence
+
+def sap_coherence(results, outdir, formats):
+    results = sorted(results, key=lambda r: r["scene"]["bodies"])
+    out = ["### sap-coherence: rain, swaps and broad-phase time against dt and N", "",
+           "| N | dt (s) | steps | sap swaps / step | budget / step | sap rebuilds | sap broad ms / step "
+           "| sap first step ms | grid broad ms / step |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for i, res in enumerate(results):
+        n = res["scene"]["bodies"]
+        st = plot.style(i)
+        sap = sorted([r for r in res["records"] if r["broad_phase"] == "sap"], key=lambda r: r["dt"])
+        grid = {r["dt"]: r for r in res["records"] if r["method"] == "aabb/grid"}
+        budget = 32 * n + 64
+        xs = [r["dt"] for r in sap]
+        ax1.plot(xs, [per_step(r, "sap_swaps") for r in sap], label=f"N = {n}", **st)
+        ax1.axhline(budget, color=st["color"], linestyle=":", linewidth=1)
+        lost = [r for r in sap if r["rebuilds"] > 1]
+        if lost:
+            ax1.scatter([r["dt"] for r in lost], [per_step(r, "sap_swaps") for r in lost], s=90,
+                        facecolors="none", edgecolors="red", zorder=4)
+        ax2.plot(xs, [per_step(r, "broad_seconds") * 1e3 for r in sap], label=f"sap, N = {n}", **st)
+        g = [grid[d] for d in xs if d in grid]
+        if g:
+            ax2.plot([r["dt"] for r in g], [per_step(r, "broad_seconds") * 1e3 for r in g], linestyle="--",
+                     label=f"grid, N = {n}", color=st["color"], marker="x")
+        first = sorted(r["first_broad_seconds"] for r in sap)[len(sap) // 2] * 1e3
+        ax2.axhline(first, color=st["color"], linestyle=":", linewidth=1)
+        for r in reversed(sap):
+            gr = grid.get(r["dt"])
+            out.append(f"| {n} | {fmt_dt(r['dt'])} | {r['steps']} | {per_step(r, 'sap_swaps'):.0f} | {budget} | "
+                       f"{r['rebuilds']} | {per_step(r, 'broad_seconds') * 1e3:.3f} | "
+                       f"{r['first_broad_seconds'] * 1e3:.3f} | "
+                       + (f"{per_step(gr, 'broad_seconds') * 1e3:.3f}" if gr else "") + " |")
+    for ax in (ax1, ax2):
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("timestep dt (s)")
+        ax.grid(True, which="both", alpha=0.3)
+    ax1.set_ylabel("insertion-sort swaps per step")
+    ax1.set_title("sap swaps per step (dotted: rebuild budget 32 N + 64;\nred rings: coherence lost, rebuilt)",
+                  fontsize=9)
+    ax2.set_ylabel("broad-phase ms per step")
+    ax2.set_title("broad phase per step (dotted: sap's first step, the initial sort)", fontsize=9)
+    legend(ax1)
+    legend(ax2, ncol=2)
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, "sap-coherence", formats)
+
+
+# ---------------------------------------------------------------------------- equal-endpoints
+
+def lattice_pair_counts(res, ccdlab):
+    """Box pairs at t = 0 (box = centre -+ r) with closed (<=) and strict (<) overlap on all
+    three axes, and sphere pairs with |d| <= R and |d| < R, on the experiment's scene."""
+    src = source(res)
+    if src.get("generator") != "lattice":
+        return None
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "scene.json")
+        args = [ccdlab, "scene", "lattice"]
+        for k, v in src.items():
+            if k == "generator":
+                continue
+            v = ",".join(repr(float(x)) for x in v) if isinstance(v, list) else repr(v)
+            args.append(f"{k}={v}")
+        try:
+            subprocess.run(args + ["-o", path], check=True, stdout=subprocess.DEVNULL)
+        except (OSError, subprocess.CalledProcessError) as e:
+            fail(f"could not regenerate the lattice scene with {ccdlab}: {e}")
+        with open(path) as f:
+            scene = json.load(f)
+    bodies = scene["bodies"]
+    import numpy as np
+    p = np.array([b["position"] for b in bodies], dtype=float)
+    r = np.array([b["radius"] for b in bodies], dtype=float)
+    lo, hi = p - r[:, None], p + r[:, None]
+    iu = np.triu_indices(len(bodies), 1)
+    closed = np.ones(len(iu[0]), dtype=bool)
+    strict = np.ones(len(iu[0]), dtype=bool)
+    for a in range(3):
+        la, ha = lo[iu[0], a], hi[iu[0], a]
+        lb, hb = lo[iu[1], a], hi[iu[1], a]
+        closed &= (lb <= ha) & (la <= hb)
+        strict &= (lb < ha) & (la < hb)
+    d2 = ((p[iu[0]] - p[iu[1]]) ** 2).sum(axis=1)
+    rr = (r[iu[0]] + r[iu[1]]) ** 2
+    return {"boxes_closed": int(closed.sum()), "boxes_strict": int(strict.sum()),
+            "spheres_closed": int((d2 <= rr).sum()), "spheres_strict": int((d2 < rr).sum())}
+
+
+def equal_endpoints(results, outdir, formats, ccdlab):
+    results = sorted(results, key=lambda r: r["experiment"]["name"], reverse=True)  # rest first
+    out = ["### equal-endpoints: lattice of exactly touching spheres", ""]
+    fig, axes = plt.subplots(1, len(results), figsize=(5.5 * len(results), 4.8), squeeze=False)
+    for ax, res in zip(axes[0], results):
+        name = res["experiment"]["name"]
+        ev = res["truth"]["events"]
+        counts = lattice_pair_counts(res, ccdlab)
+        out.append(f"**{name}**: {res['scene']['bodies']} bodies, {ev} truth events "
+                   f"({res['truth']['tangent_events']} tangent), {res['truth']['pairs']} pairs")
+        if counts:
+            out.append(f"at t = 0: box pairs closed (<=) {counts['boxes_closed']}, strict (<) "
+                       f"{counts['boxes_strict']}; sphere pairs |d| <= R {counts['spheres_closed']}, "
+                       f"|d| < R {counts['spheres_strict']}")
+        ds = dts(res)
+        out += ["", "| method | " + " | ".join(f"detected, dt {fmt_dt(d)}" for d in ds) + " |",
+                "|---|" + "---|" * len(ds)]
+        methods = method_order([res])
+        smallest = ds[-1]
+        vals = []
+        for m in methods:
+            row = [record(res, m, d) for d in ds]
+            out.append(f"| {m} | " + " | ".join(f"{r['detected']} / {r['events']}" for r in row) + " |")
+            vals.append(record(res, m, smallest)["detected"])
+        out.append("")
+        xs = range(len(methods))
+        ax.bar(xs, vals, color=["tab:blue" if v == ev else "tab:red" for v in vals])
+        ax.axhline(ev, color="black", linewidth=1, label=f"truth: {ev} events")
+        if counts:
+            ax.axhline(counts["spheres_strict"], color="tab:red", linestyle="--", linewidth=1.2,
+                       label=f"strict |d| < R at t = 0: {counts['spheres_strict']} pairs")
+            ax.axhline(counts["boxes_strict"], color="tab:orange", linestyle=":", linewidth=1.4,
+                       label=f"strict box overlap at t = 0: {counts['boxes_strict']} pairs")
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels(methods, rotation=60, ha="right", fontsize=8)
+        ax.set_ylabel(f"events detected at dt = {fmt_dt(smallest)}")
+        ax.set_title(f"{name}: {res['scene']['bodies']} bodies", fontsize=10)
+        ax.grid(True, axis="y", alpha=0.3)
+        legend(ax, loc="lower left")
+    out.append(self_check_line(results))
+    return out, save(fig, outdir, "equal-endpoints", formats)
+
+
+# ---------------------------------------------------------------------------- grazing
+
+def grazing(results, outdir, formats):
+    results = sorted(results, key=lambda r: r["experiment"]["name"], reverse=True)  # dyadic first
+    out = ["### grazing: tangent, one-ulp, shallow and near-miss passes", ""]
+    fig, axes = plt.subplots(1, len(results), figsize=(6 * len(results), 4.5), squeeze=False)
+    for ax, res in zip(axes[0], results):
+        t = res["truth"]
+        name = res["experiment"]["name"]
+        out.append(f"**{name}**: {res['scene']['bodies']} bodies, truth: {t['events']} events, "
+                   f"{t['tangent_events']} tangent (enter == exit)")
+        ds = dts(res)
+        out += ["", "| method | " + " | ".join(fmt_dt(d) for d in ds) + " |", "|---|" + "---|" * len(ds)]
+        for i, (m, rs) in enumerate(plot.by_method(res["records"]).items()):
+            ax.plot([r["dt"] for r in rs], [r["detected"] for r in rs], label=m, linewidth=1.3, markersize=4,
+                    linestyle="-" if rs[0]["continuous"] else "--", **plot.style(i))
+            row = {r["dt"]: r["detected"] for r in rs}
+            out.append(f"| {m} | " + " | ".join(str(row[d]) for d in ds) + " |")
+        out.append("")
+        ax.axhline(t["events"], color="black", linewidth=1)
+        ax.axhline(t["tangent_events"], color="gray", linestyle=":", linewidth=1)
+        ax.set_xscale("log", base=2 if "dyadic" in name else 10)
+        ax.set_ylim(bottom=0, top=t["events"] * 1.08)
+        ax.set_xlabel("timestep dt (s)")
+        ax.set_ylabel("events detected")
+        ax.set_title(f"{name}: {t['events']} events (black), {t['tangent_events']} tangent (dotted)",
+                     fontsize=9)
+        ax.grid(True, which="both", alpha=0.3)
+    legend(axes[0][-1], loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    out.append(self_check_line(results))
+    return out, save(fig, outdir, "grazing-detected", formats)
+
+
+# ---------------------------------------------------------------------------- precision
+
+def offset_of(res):
+    o = source(res).get("offset", 0)
+    return float(o[0] if isinstance(o, list) else o)
+
+
+def precision(results, outdir, formats):
+    results = sorted(results, key=offset_of)
+    offsets = [offset_of(r) for r in results]
+    labels = [f"{o:g}" for o in offsets]
+    methods = method_order(results)
+    out = ["### precision: the default gas moved by an offset", "",
+           "| offset | truth events | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
+    for res, lab in zip(results, labels):
+        cells = []
+        for m in methods:
+            rs = [r for r in res["records"] if r["method"] == m]
+            missed = sum(r["missed"] for r in rs)
+            unexpected = sum(r["self_check"]["unexpected_contacts"] for r in rs)
+            cells.append(f"{missed}" + (f" (+{unexpected} unexp.)" if unexpected else ""))
+        out.append(f"| {lab} | {res['truth']['events']} | " + " | ".join(cells) + " |")
+    out += ["", "cells: missed events summed over dt = "
+            + ", ".join(fmt_dt(d) for d in dts(results[0])) + " s; unexp. = confirmed contacts the truth lacks",
+            "", "false positives per step at the smallest dt:", "",
+            "| offset | " + " | ".join(methods) + " |", "|---|" + "---|" * len(methods)]
+    small = dts(results[0])[-1]
+    for res, lab in zip(results, labels):
+        out.append(f"| {lab} | " + " | ".join(f"{record(res, m, small)['false_positives_per_step']:.2f}"
+                                             for m in methods) + " |")
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    xs = list(range(len(results)))
+    for i, m in enumerate(methods):
+        st = plot.style(i)
+        cont = record(results[0], m, small)["continuous"]
+        ls = "-" if cont else "--"
+        ax1.plot(xs, [sum(r["missed"] for r in res["records"] if r["method"] == m) for res in results],
+                 label=m, linestyle=ls, **st)
+        ax2.plot(xs, [record(res, m, small)["false_positives_per_step"] for res in results], label=m,
+                 linestyle=ls, **st)
+    for ax in (ax1, ax2):
+        ax.set_xticks(xs)
+        ax.set_xticklabels(labels)
+        ax.set_xlabel("offset added to every coordinate")
+        ax.grid(True, which="both", alpha=0.3)
+    ax1.set_yscale("symlog", linthresh=1)
+    ax1.set_ylim(bottom=0)
+    ax1.set_ylabel("missed events (sum over dt)")
+    ax2.set_yscale("symlog", linthresh=0.1)
+    ax2.set_ylim(bottom=0)
+    ax2.set_ylabel(f"false positives per step at dt = {fmt_dt(small)}")
+    legend(ax2, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, "precision", formats)
+
+
+# ---------------------------------------------------------------------------- bound-violation
+
+def ratio_of(res):
+    true_max = source(res).get("max_acceleration", res["scene"]["max_acceleration"])
+    return res["experiment"]["acceleration_bound_used"] / true_max
+
+
+def bound_violation(results, outdir, formats):
+    results = sorted(results, key=ratio_of)
+    ratios = [ratio_of(r) for r in results]
+    methods = method_order(results)
+    ds = dts(results[0])
+    out = ["### bound-violation: swarm, acceleration_bound = ratio x the true bound", "",
+           f"cells: missed events at dt = {' / '.join(fmt_dt(d) for d in ds)} s "
+           f"(truth: {results[0]['truth']['events']} events)", "",
+           "| ratio | A used | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
+    for res, q in zip(results, ratios):
+        cells = [" / ".join(str(record(res, m, d)["missed"]) for d in ds) for m in methods]
+        out.append(f"| {q:g} | {res['experiment']['acceleration_bound_used']:g} | " + " | ".join(cells) + " |")
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    for i, m in enumerate(methods):
+        ax.plot(ratios, [sum(r["missed"] for r in res["records"] if r["method"] == m) for res in results],
+                label=m, **plot.style(i))
+    ax.axvline(1.0, color="black", linewidth=0.8, linestyle=":")
+    ax.set_yscale("symlog", linthresh=1)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("acceleration_bound / true maximum |a|")
+    ax.set_ylabel(f"missed events (sum over {len(ds)} dt)")
+    ax.set_title("bounded bounds given a wrong acceleration bound", fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    legend(ax)
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, "bound-violation", formats)
+
+
+# ---------------------------------------------------------------------------- mixed-sizes / scaling
+
+def time_against(results, outdir, formats, stem, xkey, xlabel, title):
+    results = sorted(results, key=xkey)
+    xs = [xkey(r) for r in results]
+    methods = method_order(results)
+    all_dt = sorted({r["dt"] for res in results for r in res["records"]}, reverse=True)
+    out = [f"### {stem}: {title}", "",
+           "cells: broad-phase ms per step (candidate pairs per step), per dt", "",
+           f"| {xlabel} | dt (s) | " + " | ".join(methods) + " |", "|---|---|" + "---|" * len(methods)]
+    for res, x in zip(results, xs):
+        for d in dts(res):
+            cells = []
+            for m in methods:
+                r = record(res, m, d)
+                cells.append("" if r is None else
+                             f"{per_step(r, 'broad_seconds') * 1e3:.3g} ({per_step(r, 'candidates'):.0f})")
+            out.append(f"| {x:g} | {fmt_dt(d)} | " + " | ".join(cells) + " |")
+    out += ["", "| " + xlabel + " | truth s | run: total s of all jobs |", "|---|---|---|"]
+    for res, x in zip(results, xs):
+        out.append(f"| {x:g} | {res['truth']['seconds']:.2f} | "
+                   f"{sum(r['total_seconds'] * res['experiment'].get('repeats', 1) for r in res['records']):.1f} |")
+    fig, axes = plt.subplots(1, len(all_dt), figsize=(5.5 * len(all_dt) + 1.5, 4.5), squeeze=False)
+    for ax, d in zip(axes[0], all_dt):
+        for i, m in enumerate(methods):
+            pts = [(x, record(res, m, d)) for res, x in zip(results, xs)]
+            pts = [(x, r) for x, r in pts if r is not None]
+            if pts:
+                ax.plot([x for x, _ in pts], [per_step(r, "broad_seconds") * 1e3 for _, r in pts], label=m,
+                        **plot.style(i))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("broad-phase ms per step")
+        ax.set_title(f"dt = {fmt_dt(d)} s", fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+    legend(axes[0][-1], loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, stem, formats)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
+    ap.add_argument("study", choices=STUDIES)
+    ap.add_argument("results", nargs="+", help="the study's ccdlab-results/1 files")
+    ap.add_argument("-o", "--output", help="output folder (default results/studies/STUDY/plots)")
+    ap.add_argument("--format", default="png", help="comma-separated formats (default png)")
+    ap.add_argument("--ccdlab", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",
+                                                     "ccdlab"), help="the ccdlab binary (equal-endpoints)")
+    args = ap.parse_args(argv)
+    formats = [f for f in args.format.split(",") if f]
+    for f in formats:
+        if f not in ("png", "svg", "pdf"):
+            fail(f"--format: unknown format '{f}' (png, svg, pdf)")
+    results = [plot.load(p) for p in args.results]
+    for p, res in zip(args.results, results):
+        for i, r in enumerate(res["records"]):
+            for k in ("steps", "missed", "detected", "broad_seconds", "candidates", "self_check"):
+                if k not in r:
+                    fail(f"{p}: records[{i}].{k}: missing field")
+    outdir = args.output or os.path.join("results", "studies", args.study, "plots")
+    os.makedirs(outdir, exist_ok=True)
+    s = args.study
+    if s == "tunnelling":
+        lines, paths = tunnelling(results, outdir, formats)
+    elif s == "sap-coherence":
+        lines, paths = sap_coherence(results, outdir, formats)
+    elif s == "equal-endpoints":
+        lines, paths = equal_endpoints(results, outdir, formats, args.ccdlab)
+    elif s == "grazing":
+        lines, paths = grazing(results, outdir, formats)
+    elif s == "precision":
+        lines, paths = precision(results, outdir, formats)
+    elif s == "bound-violation":
+        lines, paths = bound_violation(results, outdir, formats)
+    elif s == "mixed-sizes":
+        lines, paths = time_against(results, outdir, formats, "mixed-sizes",
+                                    lambda r: r["scene"]["radius_max"] / r["scene"]["radius_min"],
+                                    "r_max / r_min", "broad-phase time against the radius spread")
+    else:
+        lines, paths = time_against(results, outdir, formats, "scaling", lambda r: r["scene"]["bodies"],
+                                    "bodies N", "broad-phase time against N")
+    print("\n".join(lines))
+    print()
+    for p in paths:
+        print(p)
+
+
+if __name__ == "__main__":
+    main()
