@@ -56,6 +56,11 @@ inline void emit(const std::uint32_t* ids, std::uint32_t i, std::uint32_t j, std
 
 }  // namespace
 
+unsigned threads_for(std::size_t items, unsigned threads) {
+  const std::size_t most = items / kMinBodiesPerThread;
+  return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, most)));
+}
+
 std::uint64_t CellShape::cells() const {
   const double c = static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz);
   return c > 0x1p40 ? (std::uint64_t{1} << 40) : nx * ny * nz;
@@ -117,12 +122,20 @@ void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> 
     }
   }
   packed_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Aabb& b = boxes[i];
-    const double lo[3] = {b.lo.x(), b.lo.y(), b.lo.z()};
-    if (level.empty()) {
-      packed_[i] = (key_of(levels_[0], lo) << 32) | i;
-    } else {
+  if (level.empty()) {
+    const unsigned t = threads_for(n, threads_);
+    run_parallel(t, [&](unsigned i) {
+      const std::size_t b = n * i / t, e = n * (i + 1) / t;
+      for (std::size_t k = b; k < e; ++k) {
+        const Aabb& box = boxes[k];
+        const double lo[3] = {box.lo.x(), box.lo.y(), box.lo.z()};
+        packed_[k] = (key_of(levels_[0], lo) << 32) | k;
+      }
+    });
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Aabb& b = boxes[i];
+      const double lo[3] = {b.lo.x(), b.lo.y(), b.lo.z()};
       Level& lv = levels_[level[i]];
       packed_[lv.end++] = (key_of(lv, lo) << 32) | i;
     }
@@ -134,26 +147,97 @@ void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> 
   for (Level& lv : levels_) {
     radix_sort_by_key(packed_.data() + lv.begin, lv.end - lv.begin, lv.key_bits, tmp_);
     lv.cell_begin = static_cast<std::uint32_t>(cell_key_.size());
-    for (std::uint32_t k = lv.begin; k < lv.end; ++k) {
-      // The gather reads boxes in random order: prefetch a few bodies ahead.
-      if (k + 16 < lv.end) __builtin_prefetch(&boxes[static_cast<std::uint32_t>(packed_[k + 16])]);
-      const std::uint64_t p = packed_[k];
-      const auto id = static_cast<std::uint32_t>(p);
-      const auto key = static_cast<std::uint32_t>(p >> 32);
-      const Aabb& b = boxes[id];
-      items_[k] = {{b.lo.x(), b.lo.y(), b.lo.z()}, {b.hi.x(), b.hi.y(), b.hi.z()}};
-      ids_[k] = id;
-      if (k == lv.begin || key != cell_key_.back()) {
-        cell_key_.push_back(key);
-        cell_start_.push_back(k);
+    const std::uint32_t m = lv.end - lv.begin;
+    const unsigned t = threads_for(m, threads_);
+    if (thread_.size() < t) thread_.resize(t);
+    run_parallel(t, [&](unsigned i) {
+      std::vector<std::uint32_t>& keys = i == 0 ? cell_key_ : thread_[i].cell_key;
+      std::vector<std::uint32_t>& starts = i == 0 ? cell_start_ : thread_[i].cell_start;
+      if (i > 0) keys.clear(), starts.clear();
+      const std::uint32_t b = lv.begin + static_cast<std::uint32_t>(std::uint64_t{m} * i / t);
+      const std::uint32_t e = lv.begin + static_cast<std::uint32_t>(std::uint64_t{m} * (i + 1) / t);
+      for (std::uint32_t k = b; k < e; ++k) {
+        // The gather reads boxes in random order: prefetch a few bodies ahead.
+        // A 48-byte box may straddle two cache lines: prefetch its first and last byte.
+        if (k + 16 < lv.end) {
+          const char* ahead = reinterpret_cast<const char*>(&boxes[static_cast<std::uint32_t>(packed_[k + 16])]);
+          __builtin_prefetch(ahead);
+          __builtin_prefetch(ahead + sizeof(Aabb) - 1);
+        }
+        const std::uint64_t p = packed_[k];
+        const auto id = static_cast<std::uint32_t>(p);
+        const auto key = static_cast<std::uint32_t>(p >> 32);
+        const Aabb& box = boxes[id];
+        items_[k] = {{box.lo.x(), box.lo.y(), box.lo.z()}, {box.hi.x(), box.hi.y(), box.hi.z()}};
+        ids_[k] = id;
+        if (k == lv.begin || key != static_cast<std::uint32_t>(packed_[k - 1] >> 32)) {
+          keys.push_back(key);
+          starts.push_back(k);
+        }
       }
+    });
+    for (unsigned i = 1; i < t; ++i) {
+      cell_key_.insert(cell_key_.end(), thread_[i].cell_key.begin(), thread_[i].cell_key.end());
+      cell_start_.insert(cell_start_.end(), thread_[i].cell_start.begin(), thread_[i].cell_start.end());
     }
     lv.cell_end = static_cast<std::uint32_t>(cell_key_.size());
   }
   cell_start_.push_back(static_cast<std::uint32_t>(n));
 }
 
-std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) const {
+std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) {
+  const std::uint32_t m = lv.end - lv.begin;
+  build_occupancy(lv);
+  const unsigned t = threads_for(m, threads_);
+  if (t == 1) return same_level_cells(lv, lv.cell_begin, lv.cell_end, out);
+  // Cell ranges of about m / t bodies each; thread 0 appends to `out` directly, the others
+  // to their buffers, appended afterwards in range order (the serial order).
+  std::vector<std::uint32_t> bound(t + 1);
+  bound[0] = lv.cell_begin;
+  bound[t] = lv.cell_end;
+  for (unsigned i = 1; i < t; ++i) {
+    const std::uint32_t first = lv.begin + static_cast<std::uint32_t>(std::uint64_t{m} * i / t);
+    bound[i] = static_cast<std::uint32_t>(
+        std::lower_bound(cell_start_.begin() + lv.cell_begin, cell_start_.begin() + lv.cell_end, first) -
+        cell_start_.begin());
+  }
+  if (thread_.size() < t) thread_.resize(t);
+  std::vector<std::uint64_t> tests(t, 0);
+  run_parallel(t, [&](unsigned i) {
+    std::vector<BodyPair>& o = i == 0 ? out : thread_[i].pairs;
+    if (i > 0) o.clear();
+    tests[i] = same_level_cells(lv, bound[i], bound[i + 1], o);
+  });
+  std::uint64_t sum = tests[0];
+  for (unsigned i = 1; i < t; ++i) {
+    out.insert(out.end(), thread_[i].pairs.begin(), thread_[i].pairs.end());
+    sum += tests[i];
+  }
+  return sum;
+}
+
+void CellGrid::build_occupancy(const Level& lv) {
+  occupied_.clear();
+  rank_.clear();
+  const std::uint64_t cells = lv.shape.cells();
+  const std::uint64_t m = lv.end - lv.begin;
+  if (cells > kMaxOccupancyCells || cells > 64 * m + 4096) return;  // too sparse: cursors
+  // Padding: stencil keys reach k + nx * ny + nx + 1 beyond the last real key; one more word
+  // for the two-word read.
+  const std::uint64_t words = (cells + lv.shape.nx * lv.shape.ny + lv.shape.nx + 2) / 64 + 2;
+  occupied_.assign(words, 0);
+  for (std::uint32_t c = lv.cell_begin; c < lv.cell_end; ++c)
+    occupied_[cell_key_[c] >> 6] |= std::uint64_t{1} << (cell_key_[c] & 63);
+  rank_.resize(words);
+  std::uint32_t sum = 0;
+  for (std::uint64_t w = 0; w < words; ++w) {
+    rank_[w] = sum;
+    sum += static_cast<std::uint32_t>(std::popcount(occupied_[w]));
+  }
+}
+
+std::uint64_t CellGrid::same_level_cells(const Level& lv, std::uint32_t c_begin, std::uint32_t c_end,
+                                         std::vector<BodyPair>& out) const {
   const std::uint32_t* key = cell_key_.data();
   const std::uint32_t* start = cell_start_.data();
   const Item* it = items_.data();
@@ -162,7 +246,6 @@ std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) 
   const std::uint64_t nx = lv.shape.nx, nxy = lv.shape.nx * lv.shape.ny;
   // Half stencil rows, as the key of their dx = -1 cell minus the cell's own key.
   const std::uint64_t row[4] = {nx - 1, nxy - nx - 1, nxy - 1, nxy + nx - 1};
-  std::uint32_t cur[4] = {cb, cb, cb, cb};
   std::uint64_t tests = 0;
   auto cell_pair = [&](std::uint32_t c, std::uint32_t q) {
     for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
@@ -170,13 +253,62 @@ std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) 
         if (overlap(it[i], it[j])) emit(ids, i, j, out);
     tests += std::uint64_t{start[c + 1] - start[c]} * (start[q + 1] - start[q]);
   };
-  for (std::uint32_t c = cb; c < ce; ++c) {
-    const std::uint64_t k = key[c];
+  auto own_cell = [&](std::uint32_t c) {
     for (std::uint32_t i = start[c]; i < start[c + 1]; ++i)
       for (std::uint32_t j = i + 1; j < start[c + 1]; ++j) {
         ++tests;
         if (overlap(it[i], it[j])) emit(ids, i, j, out);
       }
+  };
+  if (!occupied_.empty()) {
+    // Occupancy bitmap: the 3 cells of a stencil row are 3 bits at key t; the index of the
+    // first occupied cell at or after t is its rank (occupied keys below t).
+    const std::uint64_t* bits = occupied_.data();
+    const std::uint32_t* rank = rank_.data();
+    constexpr std::uint32_t kAhead = 16;
+    for (std::uint32_t c = c_begin; c < c_end; ++c) {
+      const std::uint64_t k = key[c];
+      if (c + kAhead < ce) {
+        // The next plane's rows are ~n / nz items ahead in memory: prefetch the boxes
+        // a later cell will test there (rows y-1 and y+1 of plane z+1).
+        const std::uint64_t ka = key[c + kAhead];
+        for (int r : {1, 3}) {
+          const std::uint64_t t = ka + row[r];
+          const std::uint32_t q = cb + rank[t >> 6];
+          if (q < ce) {
+            const char* item = reinterpret_cast<const char*>(&it[start[q]]);
+            __builtin_prefetch(item);
+            __builtin_prefetch(item + sizeof(Item) - 1);
+          }
+        }
+      }
+      own_cell(c);
+      if (c + 1 < ce && key[c + 1] == k + 1) cell_pair(c, c + 1);
+      for (int r = 0; r < 4; ++r) {
+        const std::uint64_t t = k + row[r];
+        const std::uint64_t w = t >> 6;
+        const unsigned sh = static_cast<unsigned>(t & 63);
+        const std::uint64_t lo = bits[w] >> sh;
+        const std::uint64_t hi = sh == 0 ? 0 : bits[w + 1] << (64 - sh);
+        const unsigned mask = static_cast<unsigned>((lo | hi) & 7);
+        if (mask == 0) continue;
+        const std::uint64_t below = sh == 0 ? 0 : bits[w] & ((std::uint64_t{1} << sh) - 1);
+        std::uint32_t q = cb + rank[w] + static_cast<std::uint32_t>(std::popcount(below));
+        for (unsigned b = 0; b < 3; ++b)
+          if (mask >> b & 1) cell_pair(c, q++);
+      }
+    }
+    return tests;
+  }
+  // Cursor r: first cell whose key is >= (current cell's key + row[r]); neighbours may lie
+  // beyond c_end, so cursors run to the level's end ce.
+  std::uint32_t cur[4] = {cb, cb, cb, cb};
+  if (c_begin > cb && c_begin < ce)
+    for (int r = 0; r < 4; ++r)
+      cur[r] = static_cast<std::uint32_t>(std::lower_bound(key + cb, key + ce, key[c_begin] + row[r]) - key);
+  for (std::uint32_t c = c_begin; c < c_end; ++c) {
+    const std::uint64_t k = key[c];
+    own_cell(c);
     if (c + 1 < ce && key[c + 1] == k + 1) cell_pair(c, c + 1);
     for (int r = 0; r < 4; ++r) {
       const std::uint64_t t = k + row[r];

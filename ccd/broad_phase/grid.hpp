@@ -23,6 +23,12 @@ struct GridOptions {
   /// below the largest extent is ignored (the neighbour rule would not hold).
   static constexpr double kCellSize = 0.0;
   double cell_size = kCellSize;
+  /// Threads for one find_pairs call (1: serial, the registry's `grid`). With T > 1 the
+  /// bounds pass, the keying, the gather and the neighbour-cell scan are split into T
+  /// contiguous ranges (each of >= 16,384 bodies, else fewer threads), each thread with its own
+  /// pair buffer, appended in range order: the pairs, and their order, are those of T = 1.
+  static constexpr unsigned kThreads = 1;
+  unsigned threads = kThreads;
 };
 
 class UniformGrid final : public BroadPhase {

@@ -55,6 +55,12 @@ class PeerScene {
   void step();
   /// Box of sphere i is [p - r, p + r]; `out` is resized to size().
   void boxes(std::vector<Aabb>& out) const;
+  /// Centre coordinate `axis` (0, 1, 2) of every sphere, and the radii: what a library
+  /// that takes spheres (FCL) is given; boxes() is [p - r, p + r] of these.
+  std::span<const double> centres(int axis) const { return p_[axis]; }
+  std::span<const double> radii() const { return r_; }
+  /// Velocity component `axis` of every sphere (scene lengths per second).
+  std::span<const double> velocities(int axis) const { return v_[axis]; }
   /// FNV-1a 64 over the little-endian bytes of p.x p.y p.z v.x v.y v.z r per sphere.
   std::uint64_t state_hash() const;
 

@@ -1,0 +1,127 @@
+// Cost of ccdlab's kernels.
+//
+// sphere_contact_linear: the exact first-contact query of two spheres under linear motion
+// (ccd/queries/sphere_sphere_contact.hpp, quadratic case), ns per pair over 100,000 random
+// pairs (seed 11): centres in [0, 10]^3, velocities in [-10, 10]^3, radii in [0.5, 1.5],
+// one time unit. Counter: contacts (pairs with a contact in [0, 1]).
+//
+// pipeline/continuous and pipeline/discrete: one step (dt = 1/60) of the shared 100,000-body
+// peer scene (ccd/broad_phase/peer_scene.hpp: its positions, velocities and radii, linear
+// motion, no walls during the step). The continuous pipeline is the capsule bound (exact
+// knowledge; the tightest test in docs/bounds.md) + `grid` + the bound's pair test + the
+// exact first contact (ccd/truth/pair_contact.hpp) on the survivors; the discrete one is the
+// `aabb` bound at the step's start + `grid` + the bound's test + the distance test at that
+// instant, as in experiments/runner.cpp. Counters: candidates (broad-phase pairs), passed
+// (after the bound's test), confirmed (contacts).
+#include <bounds/registry.hpp>
+#include <ccd/broad_phase/grid.hpp>
+#include <ccd/broad_phase/peer_scene.hpp>
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/queries/sphere_sphere_contact.hpp>
+#include <ccd/scene/scene.hpp>
+#include <ccd/truth/pair_contact.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace {
+
+void sphere_contact_linear(benchmark::State& state) {
+  constexpr std::size_t n = 100000;
+  std::mt19937_64 gen(11);
+  std::uniform_real_distribution<double> pos(0, 10), vel(-10, 10), rad(0.5, 1.5);
+  std::vector<ccd::MovingSphere> a(n), b(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (ccd::MovingSphere* s : {&a[i], &b[i]}) {
+      s->position = ccd::Vec3(pos(gen), pos(gen), pos(gen));
+      s->velocity = ccd::Vec3(vel(gen), vel(gen), vel(gen));
+      s->radius = rad(gen);
+    }
+  }
+  std::size_t contacts = 0;
+  for (auto _ : state) {
+    contacts = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const ccd::SphereSphereContact c = ccd::sphere_sphere_first_contact(a[i], b[i], 1.0);
+      contacts += c.status != ccd::ContactStatus::NoContact;
+      benchmark::DoNotOptimize(c.toi);
+    }
+  }
+  state.counters["contacts"] = static_cast<double>(contacts);
+  // Seconds per pair, printed with an SI prefix (e.g. "34.4n" = 34.4 ns).
+  state.counters["s/pair"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                            benchmark::Counter::kInvert);
+}
+
+struct PipelineScene {
+  ccd::Scene scene;
+  ccd::Trajectories traj;
+  std::vector<ccd::BodyState> start;
+};
+
+const PipelineScene& pipeline_scene() {
+  static const PipelineScene s = [] {
+    PipelineScene p;
+    const ccd::PeerScene peer(100000, 1);
+    p.scene.horizon = ccd::PeerScene::kDt;
+    for (std::size_t i = 0; i < peer.size(); ++i) {
+      ccd::Body body;
+      body.radius = peer.radii()[i];
+      body.position = ccd::Vec3(peer.centres(0)[i], peer.centres(1)[i], peer.centres(2)[i]);
+      body.velocity = ccd::Vec3(peer.velocities(0)[i], peer.velocities(1)[i], peer.velocities(2)[i]);
+      p.scene.bodies.push_back(body);
+      p.start.push_back({body.position, body.velocity, body.radius});
+    }
+    p.traj = ccd::Trajectories(p.scene);
+    return p;
+  }();
+  return s;
+}
+
+void pipeline(benchmark::State& state, bool continuous) {
+  const PipelineScene& s = pipeline_scene();
+  auto bound = ccd::parse_bound(continuous ? "capsule" : "aabb").make();
+  ccd::UniformGrid grid;
+  ccd::StepContext ctx;
+  ctx.t0 = 0.0;
+  ctx.t1 = continuous ? ccd::PeerScene::kDt : 0.0;
+  ctx.start = s.start;
+  ctx.exact = continuous ? &s.traj : nullptr;
+  std::vector<ccd::Aabb> boxes;
+  std::vector<ccd::BodyPair> pairs, passed;
+  std::size_t confirmed = 0;
+  for (auto _ : state) {
+    bound->prepare(ctx, boxes);
+    grid.find_pairs(boxes, pairs);
+    passed.clear();
+    for (const ccd::BodyPair& p : pairs) {
+      double earliest = ctx.t0;
+      if (bound->test(p.a, p.b, &earliest)) passed.push_back(p);
+    }
+    confirmed = 0;
+    for (const ccd::BodyPair& p : passed) {
+      if (continuous) {
+        confirmed += ccd::pair_first_contact(s.traj, p.a, p.b, ctx.t0, ctx.t1).has_value();
+      } else {
+        const ccd::Vec3 d = s.start[p.a].position - s.start[p.b].position;
+        const double R = s.start[p.a].radius + s.start[p.b].radius;
+        const double dd = d.squaredNorm(), rr = R * R;
+        confirmed += dd - rr <= 8.0 * std::numeric_limits<double>::epsilon() * (dd + rr);
+      }
+    }
+  }
+  state.counters["candidates"] = static_cast<double>(pairs.size());
+  state.counters["passed"] = static_cast<double>(passed.size());
+  state.counters["confirmed"] = static_cast<double>(confirmed);
+}
+
+}  // namespace
+
+BENCHMARK(sphere_contact_linear)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, continuous, true)->Name("pipeline/continuous/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, discrete, false)->Name("pipeline/discrete/100000")->Unit(benchmark::kMillisecond);
+
+BENCHMARK_MAIN();
