@@ -5,10 +5,10 @@
 // pairs (seed 11): centres in [0, 10]^3, velocities in [-10, 10]^3, radii in [0.5, 1.5],
 // one time unit. Counter: contacts (pairs with a contact in [0, 1]).
 //
-// pipeline/continuous and pipeline/discrete: one step (dt = 1/60) of the shared 100,000-body
+// pipeline/continuous/BOUND and pipeline/discrete/aabb: one step (dt = 1/60) of the shared 100,000-body
 // peer scene (ccd/broad_phase/peer_scene.hpp: its positions, velocities and radii, linear
-// motion, no walls during the step). The continuous pipeline is the capsule bound (exact
-// knowledge; the tightest test in docs/bounds.md) + `grid` + the bound's pair test + the
+// motion, no walls during the step). A continuous pipeline is a space-time bound (capsule,
+// swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's pair test + the
 // exact first contact (ccd/truth/pair_contact.hpp) on the survivors; the discrete one is the
 // `aabb` bound at the step's start + `grid` + the bound's test + the distance test at that
 // instant, as in experiments/runner.cpp. Counters: candidates (broad-phase pairs), passed
@@ -111,15 +111,18 @@ const PipelineScene& pipeline_scene() {
   return s;
 }
 
-void pipeline(benchmark::State& state, bool continuous) {
+void pipeline(benchmark::State& state, const char* bound_name) {
   const PipelineScene& s = pipeline_scene();
-  auto bound = ccd::parse_bound(continuous ? "capsule" : "aabb").make();
+  const ccd::BoundSpec spec = ccd::parse_bound(bound_name);
+  const bool continuous = spec.info->knowledge != ccd::Knowledge::Instant;
+  auto bound = spec.make();
   ccd::UniformGrid grid;
   ccd::StepContext ctx;
   ctx.t0 = 0.0;
   ctx.t1 = continuous ? ccd::PeerScene::kDt : 0.0;
   ctx.start = s.start;
-  ctx.exact = continuous ? &s.traj : nullptr;
+  ctx.exact = spec.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
+  ctx.acceleration_bound = 0.0;  // linear motion: the true bound
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs, passed;
   std::size_t confirmed = 0;
@@ -152,7 +155,11 @@ void pipeline(benchmark::State& state, bool continuous) {
 
 BENCHMARK(sphere_contact_linear)->Unit(benchmark::kMillisecond);
 BENCHMARK(sphere_contact_linear_ray)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pipeline, continuous, true)->Name("pipeline/continuous/100000")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(pipeline, discrete, false)->Name("pipeline/discrete/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, capsule, "capsule")->Name("pipeline/continuous/capsule/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, swept_aabb, "swept_aabb")
+    ->Name("pipeline/continuous/swept_aabb/100000")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, horn1, "horn:1")->Name("pipeline/continuous/horn:1/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, discrete, "aabb")->Name("pipeline/discrete/aabb/100000")->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
