@@ -123,51 +123,86 @@ def tunnelling(results, outdir, formats):
 
 # ---------------------------------------------------------------------------- sap-coherence
 
+def swap_budget(broad_phase, n):
+    """Swaps per step above which the broad phase rebuilds (ccd/broad_phase/sap.hpp,
+    sort_sweep.hpp): sap 2 * 6n * bit_width(2n) + 64 (endpoints, three axes), sweep
+    32 n + 64 (starts, one axis)."""
+    if broad_phase == "sap":
+        return 2 * 6 * n * (2 * n).bit_length() + 64
+    return 32 * n + 64
+
+
+COHERENT = ("sap", "sweep")  # broad phases that keep a sorted order between steps
+
+
 def sap_coherence(results, outdir, formats):
     results = sorted(results, key=lambda r: r["scene"]["bodies"])
+    present = [b for b in COHERENT if any(r["broad_phase"] == b for res in results for r in res["records"])]
+    head = "| N | dt (s) | steps | "
+    rule = "|---|---|---|"
+    for b in present:
+        head += f"{b} swaps / step | {b} rebuilds | {b} ms / step | {b} first step ms | "
+        rule += "---|---|---|---|"
+    head += "grid ms / step | grid first step ms |"
+    rule += "---|---|"
     out = ["### sap-coherence: rain, swaps and broad-phase time against dt and N", "",
-           "| N | dt (s) | steps | sap swaps / step | budget / step | sap rebuilds | sap broad ms / step "
-           "| sap first step ms | grid broad ms / step |",
-           "|---|---|---|---|---|---|---|---|---|"]
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+           "swap budgets per step (rebuild above): "
+           + "; ".join(f"{b} " + ", ".join(f"{swap_budget(b, res['scene']['bodies'])} (N = {res['scene']['bodies']})"
+                                             for res in results) for b in present), "", head, rule]
+    fig, axes = plt.subplots(1, len(present) + 1, figsize=(5.2 * (len(present) + 1), 4.6), squeeze=False)
+    axes = axes[0]
+    tax = axes[-1]
     for i, res in enumerate(results):
         n = res["scene"]["bodies"]
         st = plot.style(i)
-        sap = sorted([r for r in res["records"] if r["broad_phase"] == "sap"], key=lambda r: r["dt"])
+        by = {b: sorted([r for r in res["records"] if r["broad_phase"] == b], key=lambda r: r["dt"]) for b in present}
         grid = {r["dt"]: r for r in res["records"] if r["method"] == "aabb/grid"}
-        budget = 32 * n + 64
-        xs = [r["dt"] for r in sap]
-        ax1.plot(xs, [per_step(r, "sap_swaps") for r in sap], label=f"N = {n}", **st)
-        ax1.axhline(budget, color=st["color"], linestyle=":", linewidth=1)
-        lost = [r for r in sap if r["rebuilds"] > 1]
-        if lost:
-            ax1.scatter([r["dt"] for r in lost], [per_step(r, "sap_swaps") for r in lost], s=90,
-                        facecolors="none", edgecolors="red", zorder=4)
-        ax2.plot(xs, [per_step(r, "broad_seconds") * 1e3 for r in sap], label=f"sap, N = {n}", **st)
+        for ax, b in zip(axes, present):
+            rs = by[b]
+            xs = [r["dt"] for r in rs]
+            ax.plot(xs, [per_step(r, "sap_swaps") for r in rs], label=f"N = {n}", **st)
+            ax.axhline(swap_budget(b, n), color=st["color"], linestyle=":", linewidth=1)
+            lost = [r for r in rs if r["rebuilds"] > 1]
+            if lost:
+                ax.scatter([r["dt"] for r in lost], [per_step(r, "sap_swaps") for r in lost], s=90,
+                           facecolors="none", edgecolors="red", zorder=4)
+        for b, ls in zip(present, ("-", "--")):
+            rs = by[b]
+            tax.plot([r["dt"] for r in rs], [per_step(r, "broad_seconds") * 1e3 for r in rs], linestyle=ls,
+                     label=f"{b}, N = {n}", color=st["color"], marker=st.get("marker", "o"), markersize=4)
+        xs = sorted({r["dt"] for b in present for r in by[b]})
         g = [grid[d] for d in xs if d in grid]
         if g:
-            ax2.plot([r["dt"] for r in g], [per_step(r, "broad_seconds") * 1e3 for r in g], linestyle="--",
+            tax.plot([r["dt"] for r in g], [per_step(r, "broad_seconds") * 1e3 for r in g], linestyle=":",
                      label=f"grid, N = {n}", color=st["color"], marker="x")
-        first = sorted(r["first_broad_seconds"] for r in sap)[len(sap) // 2] * 1e3
-        ax2.axhline(first, color=st["color"], linestyle=":", linewidth=1)
-        for r in reversed(sap):
-            gr = grid.get(r["dt"])
-            out.append(f"| {n} | {fmt_dt(r['dt'])} | {r['steps']} | {per_step(r, 'sap_swaps'):.0f} | {budget} | "
-                       f"{r['rebuilds']} | {per_step(r, 'broad_seconds') * 1e3:.3f} | "
-                       f"{r['first_broad_seconds'] * 1e3:.3f} | "
-                       + (f"{per_step(gr, 'broad_seconds') * 1e3:.3f}" if gr else "") + " |")
-    for ax in (ax1, ax2):
+        for d in reversed(xs):
+            row = [by_dt for by_dt in (next((r for r in by[b] if r["dt"] == d), None) for b in present)]
+            steps = next(r["steps"] for r in row if r is not None)
+            cells = []
+            for r in row:
+                if r is None:
+                    cells += ["", "", "", ""]
+                else:
+                    cells += [f"{per_step(r, 'sap_swaps'):.0f}", str(r["rebuilds"]),
+                              f"{per_step(r, 'broad_seconds') * 1e3:.3g}", f"{r['first_broad_seconds'] * 1e3:.3g}"]
+            gr = grid.get(d)
+            cells += ([f"{per_step(gr, 'broad_seconds') * 1e3:.3g}", f"{gr['first_broad_seconds'] * 1e3:.3g}"]
+                      if gr else ["", ""])
+            out.append(f"| {n} | {fmt_dt(d)} | {steps} | " + " | ".join(cells) + " |")
+    for ax in axes:
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel("timestep dt (s)")
         ax.grid(True, which="both", alpha=0.3)
-    ax1.set_ylabel("insertion-sort swaps per step")
-    ax1.set_title("sap swaps per step (dotted: rebuild budget 32 N + 64;\nred rings: coherence lost, rebuilt)",
-                  fontsize=9)
-    ax2.set_ylabel("broad-phase ms per step")
-    ax2.set_title("broad phase per step (dotted: sap's first step, the initial sort)", fontsize=9)
-    legend(ax1)
-    legend(ax2, ncol=2)
+    what = {"sap": "endpoint swaps, 3 axes", "sweep": "start swaps, 1 axis"}
+    for ax, b in zip(axes, present):
+        ax.set_ylabel("insertion-sort swaps per step")
+        ax.set_title(f"{b}: {what[b]} per step\n(dotted: rebuild budget; red rings: coherence lost)", fontsize=9)
+        legend(ax)
+    tax.set_ylabel("broad-phase ms per step")
+    tax.set_title("broad phase per step: " + ", ".join(f"{b} {ls}" for b, ls in zip(present, ("solid", "dashed")))
+                  + ", grid dotted", fontsize=9)
+    legend(tax, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     out += ["", self_check_line(results)]
     return out, save(fig, outdir, "sap-coherence", formats)
 
