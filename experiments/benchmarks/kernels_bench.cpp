@@ -25,23 +25,33 @@
 #include <benchmark/benchmark.h>
 
 #include <limits>
+#include <utility>
 #include <random>
 #include <vector>
 
 namespace {
 
+// 100,000 random pairs (seed 11), the same for both contact benchmarks.
+const std::pair<std::vector<ccd::MovingSphere>, std::vector<ccd::MovingSphere>>& random_pairs(std::size_t n) {
+  static const auto pairs = [n] {
+    std::mt19937_64 gen(11);
+    std::uniform_real_distribution<double> pos(0, 10), vel(-10, 10), rad(0.5, 1.5);
+    std::vector<ccd::MovingSphere> a(n), b(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (ccd::MovingSphere* s : {&a[i], &b[i]}) {
+        s->position = ccd::Vec3(pos(gen), pos(gen), pos(gen));
+        s->velocity = ccd::Vec3(vel(gen), vel(gen), vel(gen));
+        s->radius = rad(gen);
+      }
+    }
+    return std::make_pair(std::move(a), std::move(b));
+  }();
+  return pairs;
+}
+
 void sphere_contact_linear(benchmark::State& state) {
   constexpr std::size_t n = 100000;
-  std::mt19937_64 gen(11);
-  std::uniform_real_distribution<double> pos(0, 10), vel(-10, 10), rad(0.5, 1.5);
-  std::vector<ccd::MovingSphere> a(n), b(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (ccd::MovingSphere* s : {&a[i], &b[i]}) {
-      s->position = ccd::Vec3(pos(gen), pos(gen), pos(gen));
-      s->velocity = ccd::Vec3(vel(gen), vel(gen), vel(gen));
-      s->radius = rad(gen);
-    }
-  }
+  const auto& [a, b] = random_pairs(n);
   std::size_t contacts = 0;
   for (auto _ : state) {
     contacts = 0;
@@ -61,16 +71,7 @@ void sphere_contact_linear(benchmark::State& state) {
 // relative centre against a sphere of radius r_a + r_b at the origin), the leaner query.
 void sphere_contact_linear_ray(benchmark::State& state) {
   constexpr std::size_t n = 100000;
-  std::mt19937_64 gen(11);
-  std::uniform_real_distribution<double> pos(0, 10), vel(-10, 10), rad(0.5, 1.5);
-  std::vector<ccd::MovingSphere> a(n), b(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (ccd::MovingSphere* s : {&a[i], &b[i]}) {
-      s->position = ccd::Vec3(pos(gen), pos(gen), pos(gen));
-      s->velocity = ccd::Vec3(vel(gen), vel(gen), vel(gen));
-      s->radius = rad(gen);
-    }
-  }
+  const auto& [a, b] = random_pairs(n);
   std::size_t contacts = 0;
   for (auto _ : state) {
     contacts = 0;
