@@ -1,6 +1,7 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 
 #include <cmath>
@@ -12,32 +13,7 @@ namespace {
 
 using nlohmann::json;
 
-struct Reader {
-  const std::string& file;
-
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw InputError(file, field, what);
-  }
-  const json& require(const json& obj, const char* key, const std::string& path) const {
-    auto it = obj.find(key);
-    if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "missing required field");
-    return *it;
-  }
-  double number(const json& v, const std::string& field) const {
-    if (!v.is_number()) fail(field, "must be a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(field, "must be finite");
-    return x;
-  }
-  Vec3 vec3(const json& v, const std::string& field) const {
-    if (!v.is_array() || v.size() != 3) fail(field, "must be an array of 3 numbers");
-    return {number(v[0], field + "[0]"), number(v[1], field + "[1]"), number(v[2], field + "[2]")};
-  }
-  Vec3 optional_vec3(const json& obj, const char* key, const std::string& path) const {
-    auto it = obj.find(key);
-    return it == obj.end() ? Vec3::Zero() : vec3(*it, path + "." + key);
-  }
-};
+using Reader = JsonReader;
 
 std::string body_path(std::size_t i) { return "bodies[" + std::to_string(i) + "]"; }
 

@@ -1,6 +1,7 @@
 #include <ccd/truth/truth_io.hpp>
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
@@ -14,30 +15,7 @@ using nlohmann::json;
 
 json event_json(const ContactEvent& e) { return {{"a", e.a}, {"b", e.b}, {"enter", e.enter}, {"exit", e.exit}}; }
 
-struct Reader {
-  const std::string& file;
-  [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw InputError(file, field, what);
-  }
-  const json& require(const json& obj, const char* key, const std::string& path) const {
-    auto it = obj.find(key);
-    if (it == obj.end()) fail(path.empty() ? key : path + "." + key, "missing required field");
-    return *it;
-  }
-  double number(const json& v, const std::string& field) const {
-    if (!v.is_number()) fail(field, "must be a number");
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) fail(field, "must be finite");
-    return x;
-  }
-  std::uint32_t index(const json& v, const std::string& field) const {
-    if (!v.is_number_integer() || (v.is_number_integer() && !v.is_number_unsigned() && v.get<std::int64_t>() < 0))
-      fail(field, "must be a non-negative integer");
-    const std::uint64_t x = v.get<std::uint64_t>();
-    if (x > std::numeric_limits<std::uint32_t>::max()) fail(field, "body index too large");
-    return static_cast<std::uint32_t>(x);
-  }
-};
+using Reader = JsonReader;
 
 }  // namespace
 
