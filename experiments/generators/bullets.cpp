@@ -1,5 +1,6 @@
 // `bullets`: a slow field of larger spheres and a few small fast spheres aimed at field
 // bodies: the case where a discrete check at a coarse timestep tunnels through contacts.
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -39,10 +40,7 @@ ccd::Scene generate_bullets(const GeneratorParameters& p) {
   const double side =
       cube_side(n_field, mean_cube_uniform(r_min, r_max), p.number("fraction"), std::max(r_max, bullet_radius));
 
-  ccd::Scene scene;
-  scene.horizon = p.number("horizon");
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
   for (std::size_t i = 0; i < n_field; ++i) {
     ccd::Body& b = scene.bodies[i];

@@ -1,4 +1,5 @@
 // `gas`: spheres in a box moving in straight lines (no gravity, elastic walls).
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -10,12 +11,11 @@ constexpr ParameterSpec kParameters[] = {
     kBodiesParameter,
     kHorizonParameter,
     kOffsetParameter,
-    {"r_min", 0.5, "smallest radius (radii uniform in [r_min, r_max])", ParameterKind::Real, kPositiveLength},
-    {"r_max", 1.5, "largest radius", ParameterKind::Real, kPositiveLength},
+    uniform_r_min_parameter(0.5),
+    r_max_parameter(1.5),
     {"speed_max", 10.0, "speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
      kNonNegativeRate},
-    {"fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
-     kVolumeFraction},
+    kBoxFractionParameter,
 };
 
 ccd::Scene generate_gas(const GeneratorParameters& p) {
@@ -26,10 +26,7 @@ ccd::Scene generate_gas(const GeneratorParameters& p) {
   const std::size_t n = p.integer("bodies");
   const double side = cube_side(n, mean_cube_uniform(r_min, r_max), p.number("fraction"), r_max);
 
-  ccd::Scene scene;
-  scene.horizon = p.number("horizon");
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);

@@ -5,6 +5,7 @@
 // and the offset of the passing line is a difference of exactly representable
 // coordinates, so the closest distance computed from the scene is exactly the intended
 // one (see docs/generators.md).
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -63,10 +64,7 @@ ccd::Scene generate_grazing(const GeneratorParameters& p) {
   const double length = 4.0 * r + speed * horizon;
   const double width = static_cast<double>(per_side) * pitch;
 
-  ccd::Scene scene;
-  scene.horizon = horizon;
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3(length, width, width)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3(length, width, width));
   Random rng(p.integer("seed"));
   const std::size_t max_k = static_cast<std::size_t>(ticks) - 1;  // k in [1, max_k]
   for (std::size_t q = 0; q < pairs; ++q) {

@@ -2,6 +2,7 @@
 // centre is (2i + 2) r on every axis, with r a power of two, so all coordinates, gaps and
 // distances are exact (neighbour distance == 2r). Degenerate on purpose: equal
 // coordinates everywhere and tangent contacts at t = 0.
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -35,10 +36,7 @@ ccd::Scene generate_lattice(const GeneratorParameters& p) {
   // Centres (2i + 2) r, i < per_side: one radius of clearance to every wall.
   const double side = 2.0 * static_cast<double>(per_side + 1) * r;
 
-  ccd::Scene scene;
-  scene.horizon = p.number("horizon");
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
   for (std::size_t k = 0; k < n; ++k) {
     ccd::Body& b = scene.bodies[k];

@@ -1,5 +1,6 @@
 // `mixed`: moving spheres whose radii span orders of magnitude (log-uniform), in a box:
 // the case that defeats a single grid cell size.
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -19,8 +20,7 @@ constexpr ParameterSpec kParameters[] = {
     {"r_max", 10.0, "largest radius (body 1 gets r_max)", ParameterKind::Real, kPositiveLength},
     {"speed_max", 10.0, "speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
      kNonNegativeRate},
-    {"fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
-     kVolumeFraction},
+    kBoxFractionParameter,
 };
 
 ccd::Scene generate_mixed(const GeneratorParameters& p) {
@@ -32,10 +32,7 @@ ccd::Scene generate_mixed(const GeneratorParameters& p) {
   const std::size_t n = p.integer("bodies");
   const double side = cube_side(n, mean_cube_log_uniform(r_min, r_max), p.number("fraction"), r_max);
 
-  ccd::Scene scene;
-  scene.horizon = p.number("horizon");
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
   for (std::size_t i = 0; i < n; ++i) {
     ccd::Body& b = scene.bodies[i];

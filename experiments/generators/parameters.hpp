@@ -67,6 +67,20 @@ inline constexpr ParameterSpec kOffsetParameter{
     "offset", 0.0, "moves every position and the box (one number for all axes, or x,y,z)",
     ParameterKind::Vector, {-kMaxOffset, kMaxOffset, false, false}};
 
+// Parameters several generators share, with the generator's own default.
+/// r_min and r_max of radii uniform in [r_min, r_max].
+constexpr ParameterSpec uniform_r_min_parameter(double default_value) {
+  return {"r_min", default_value, "smallest radius (radii uniform in [r_min, r_max])", ParameterKind::Real,
+          kPositiveLength};
+}
+constexpr ParameterSpec r_max_parameter(double default_value) {
+  return {"r_max", default_value, "largest radius", ParameterKind::Real, kPositiveLength};
+}
+/// The volume fraction that sets the side L of a cubic box.
+inline constexpr ParameterSpec kBoxFractionParameter{
+    "fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
+    kVolumeFraction};
+
 /// One parameter as given, before checking: a name and one or more numbers.
 struct ParameterValue {
   std::string name;

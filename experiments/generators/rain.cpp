@@ -1,6 +1,7 @@
 // `rain`: balls falling under gravity in a tall column onto the floor of a box; every
 // wall (the floor too) is elastic, so the balls bounce back up. Everything moves along y,
 // the worst axis for sweep and prune.
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -12,8 +13,8 @@ constexpr ParameterSpec kParameters[] = {
     kBodiesParameter,
     kHorizonParameter,
     kOffsetParameter,
-    {"r_min", 0.5, "smallest radius (radii uniform in [r_min, r_max])", ParameterKind::Real, kPositiveLength},
-    {"r_max", 1.0, "largest radius", ParameterKind::Real, kPositiveLength},
+    uniform_r_min_parameter(0.5),
+    r_max_parameter(1.0),
     {"fraction", 0.02, "volume fraction of the column filled by the balls", ParameterKind::Real,
      kVolumeFraction},
     {"aspect", 4.0, "column height / width: the box is [0, W] x [0, aspect W] x [0, W]", ParameterKind::Real,
@@ -35,11 +36,8 @@ ccd::Scene generate_rain(const GeneratorParameters& p) {
   const double width = cube_side(n, mean_cube_uniform(r_min, r_max), p.number("fraction") * aspect, r_max);
   const double height = aspect * width;
 
-  ccd::Scene scene;
-  scene.horizon = p.number("horizon");
+  ccd::Scene scene = box_scene(p, ccd::Vec3(width, height, width));
   scene.gravity = ccd::Vec3(0.0, -p.number("gravity"), 0.0);
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3(width, height, width)};
-  scene.bodies.resize(n);
   Random rng(p.integer("seed"));
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);

@@ -1,5 +1,6 @@
 // `swarm`: Hubbard's setting. Bodies in a box with bounded, piecewise-constant random
 // accelerations: |a| <= max_acceleration at all times, changing at known times.
+#include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
 
@@ -14,10 +15,9 @@ constexpr ParameterSpec kParameters[] = {
     kBodiesParameter,
     kHorizonParameter,
     kOffsetParameter,
-    {"r_min", 0.5, "smallest radius (radii uniform in [r_min, r_max])", ParameterKind::Real, kPositiveLength},
-    {"r_max", 1.5, "largest radius", ParameterKind::Real, kPositiveLength},
-    {"fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
-     kVolumeFraction},
+    uniform_r_min_parameter(0.5),
+    r_max_parameter(1.5),
+    kBoxFractionParameter,
     {"speed_max", 5.0, "initial speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
      kNonNegativeRate},
     {"max_acceleration", 20.0, "every acceleration is uniform in the ball of this radius", ParameterKind::Real,
@@ -55,10 +55,7 @@ ccd::Scene generate_swarm(const GeneratorParameters& p) {
   for (std::size_t k = 0; k < changes; ++k)
     times[k] = horizon * (static_cast<double>(k + 1) / static_cast<double>(changes + 1));
 
-  ccd::Scene scene;
-  scene.horizon = horizon;
-  scene.box = ccd::WallBox{ccd::Vec3::Zero(), ccd::Vec3::Constant(side)};
-  scene.bodies.resize(n);
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);
