@@ -49,16 +49,18 @@ const std::pair<std::vector<ccd::MovingSphere>, std::vector<ccd::MovingSphere>>&
   return pairs;
 }
 
-void sphere_contact_linear(benchmark::State& state) {
+// Times `query(a, b)` (returns {contact?, toi}) over the 100,000 random pairs.
+template <class Query>
+void time_contact_query(benchmark::State& state, Query query) {
   constexpr std::size_t n = 100000;
   const auto& [a, b] = random_pairs(n);
   std::size_t contacts = 0;
   for (auto _ : state) {
     contacts = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const ccd::SphereSphereContact c = ccd::sphere_sphere_first_contact(a[i], b[i], 1.0);
-      contacts += c.status != ccd::ContactStatus::NoContact;
-      benchmark::DoNotOptimize(c.toi);
+      const auto [hit, toi] = query(a[i], b[i]);
+      contacts += hit;
+      benchmark::DoNotOptimize(toi);
     }
   }
   state.counters["contacts"] = static_cast<double>(contacts);
@@ -67,24 +69,21 @@ void sphere_contact_linear(benchmark::State& state) {
                                                                             benchmark::Counter::kInvert);
 }
 
+void sphere_contact_linear(benchmark::State& state) {
+  time_contact_query(state, [](const ccd::MovingSphere& a, const ccd::MovingSphere& b) {
+    const ccd::SphereSphereContact c = ccd::sphere_sphere_first_contact(a, b, 1.0);
+    return std::pair{c.status != ccd::ContactStatus::NoContact, c.toi};
+  });
+}
+
 // The same pairs through ccd/queries/ray_sphere.hpp (relative motion: a ray from the
 // relative centre against a sphere of radius r_a + r_b at the origin), the leaner query.
 void sphere_contact_linear_ray(benchmark::State& state) {
-  constexpr std::size_t n = 100000;
-  const auto& [a, b] = random_pairs(n);
-  std::size_t contacts = 0;
-  for (auto _ : state) {
-    contacts = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const ccd::RaySphereResult c = ccd::ray_sphere(b[i].position - a[i].position, b[i].velocity - a[i].velocity,
-                                                     ccd::Vec3::Zero(), a[i].radius + b[i].radius, 1.0);
-      contacts += c.status == ccd::RaySphereStatus::Hit || c.status == ccd::RaySphereStatus::Overlapping;
-      benchmark::DoNotOptimize(c.toi);
-    }
-  }
-  state.counters["contacts"] = static_cast<double>(contacts);
-  state.counters["s/pair"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
-                                                                            benchmark::Counter::kInvert);
+  time_contact_query(state, [](const ccd::MovingSphere& a, const ccd::MovingSphere& b) {
+    const ccd::RaySphereResult c =
+        ccd::ray_sphere(b.position - a.position, b.velocity - a.velocity, ccd::Vec3::Zero(), a.radius + b.radius, 1.0);
+    return std::pair{c.status == ccd::RaySphereStatus::Hit || c.status == ccd::RaySphereStatus::Overlapping, c.toi};
+  });
 }
 
 struct PipelineScene {
