@@ -1,5 +1,5 @@
 #pragma once
-// The peers' timing protocol on the shared moving-spheres scene (ccd/broad_phase/peer_scene.hpp):
+// The peers' timing protocol on the shared moving-spheres scene (benchmarks/support/peer_scene.hpp):
 // frame 0 builds the structure (not timed), frames 1 and 2 are warm-up, frames 3..22 are
 // measured; a frame's time is BroadPhase::find_pairs alone (the structure's update and the
 // query), not the scene's motion or the box computation. The figure is the median.

@@ -44,10 +44,10 @@ bool record_pair(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* dat
 
 class FclPeer final : public PeerMethod {
  public:
-  explicit FclPeer(std::function<std::unique_ptr<fcl::BroadPhaseCollisionManagerd>(const ccd::PeerScene&)> make)
+  explicit FclPeer(std::function<std::unique_ptr<fcl::BroadPhaseCollisionManagerd>(const ccdlab::bench::PeerScene&)> make)
       : make_(std::move(make)) {}
 
-  void setup(const ccd::PeerScene& scene, std::span<const ccd::Aabb>, std::vector<ccd::BodyPair>& out) override {
+  void setup(const ccdlab::bench::PeerScene& scene, std::span<const ccd::Aabb>, std::vector<ccd::BodyPair>& out) override {
     manager_ = make_(scene);
     const std::span<const double> r = scene.radii();
     objects_.clear();
@@ -66,7 +66,7 @@ class FclPeer final : public PeerMethod {
     collide(out);
   }
 
-  void frame(const ccd::PeerScene& scene, std::span<const ccd::Aabb>, std::vector<ccd::BodyPair>& out) override {
+  void frame(const ccdlab::bench::PeerScene& scene, std::span<const ccd::Aabb>, std::vector<ccd::BodyPair>& out) override {
     const std::span<const double> x = scene.centres(0), y = scene.centres(1), z = scene.centres(2);
     for (std::size_t i = 0; i < objects_.size(); ++i) {
       objects_[i]->setTranslation(fcl::Vector3d(x[i], y[i], z[i]));
@@ -86,7 +86,7 @@ class FclPeer final : public PeerMethod {
     reported_ = data.reported;
   }
 
-  std::function<std::unique_ptr<fcl::BroadPhaseCollisionManagerd>(const ccd::PeerScene&)> make_;
+  std::function<std::unique_ptr<fcl::BroadPhaseCollisionManagerd>(const ccdlab::bench::PeerScene&)> make_;
   std::unique_ptr<fcl::BroadPhaseCollisionManagerd> manager_;
   std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects_;
   std::uint64_t reported_ = 0;
@@ -97,7 +97,7 @@ PeerInfo simple(std::string name, std::string note) {
   return {std::move(name), "fcl-0.7", std::move(note),
           [] {
             return std::make_unique<FclPeer>(
-                [](const ccd::PeerScene&) { return std::make_unique<Manager>(); });
+                [](const ccdlab::bench::PeerScene&) { return std::make_unique<Manager>(); });
           },
           false};
 }
@@ -119,7 +119,7 @@ std::vector<PeerInfo> fcl_peers() {
   v.push_back({"fcl_spatial_hash", "fcl-0.7",
                "SpatialHashingCollisionManager (SimpleHashTable, N buckets, cell 3); superset filtered",
                [] {
-                 return std::make_unique<FclPeer>([](const ccd::PeerScene& s) {
+                 return std::make_unique<FclPeer>([](const ccdlab::bench::PeerScene& s) {
                    const double rmax = *std::max_element(s.radii().begin(), s.radii().end());
                    const double lo = -rmax, hi = s.side() + rmax;
                    return std::make_unique<fcl::SpatialHashingCollisionManagerd<>>(

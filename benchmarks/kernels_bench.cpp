@@ -6,7 +6,7 @@
 // one time unit. Counter: contacts (pairs with a contact in [0, 1]).
 //
 // pipeline/continuous/BOUND and pipeline/discrete/aabb: one step (dt = 1/60) of the shared 100,000-body
-// peer scene (ccd/broad_phase/peer_scene.hpp: its positions, velocities and radii, linear
+// peer scene (benchmarks/support/peer_scene.hpp: its positions, velocities and radii, linear
 // motion, no walls during the step). A continuous pipeline is a space-time bound (capsule,
 // swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's pair test + the
 // exact first contact (ccd/truth/pair_contact.hpp) on the survivors; the discrete one is the
@@ -15,7 +15,7 @@
 // (after the bound's test), confirmed (contacts).
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/grid.hpp>
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/queries/ray_sphere.hpp>
 #include <ccd/queries/sphere_sphere_contact.hpp>
@@ -95,8 +95,8 @@ struct PipelineScene {
 const PipelineScene& pipeline_scene() {
   static const PipelineScene s = [] {
     PipelineScene p;
-    const ccd::PeerScene peer(100000, 1);
-    p.scene.horizon = ccd::PeerScene::kDt;
+    const ccdlab::bench::PeerScene peer(100000, 1);
+    p.scene.horizon = ccdlab::bench::PeerScene::kDt;
     for (std::size_t i = 0; i < peer.size(); ++i) {
       ccd::Body body;
       body.radius = peer.radii()[i];
@@ -119,7 +119,7 @@ void pipeline(benchmark::State& state, const char* bound_name) {
   ccd::UniformGrid grid;
   ccd::StepContext ctx;
   ctx.t0 = 0.0;
-  ctx.t1 = continuous ? ccd::PeerScene::kDt : 0.0;
+  ctx.t1 = continuous ? ccdlab::bench::PeerScene::kDt : 0.0;
   ctx.start = s.start;
   ctx.exact = spec.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.acceleration_bound = 0.0;  // linear motion: the true bound

@@ -39,7 +39,7 @@ class BulletPeer final : public PeerMethod {
       for (btBroadphaseProxy* p : proxies_) broadphase_->destroyProxy(p, &dispatcher_);
   }
 
-  void setup(const ccd::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void setup(const ccdlab::bench::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     if (kind_ == Kind::Dbvt) {
       broadphase_ = std::make_unique<btDbvtBroadphase>();
     } else {
@@ -58,7 +58,7 @@ class BulletPeer final : public PeerMethod {
     query(out);
   }
 
-  void frame(const ccd::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void frame(const ccdlab::bench::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     for (std::size_t i = 0; i < boxes.size(); ++i)
       broadphase_->setAabb(proxies_[i], vec(boxes[i].lo), vec(boxes[i].hi), &dispatcher_);
     query(out);

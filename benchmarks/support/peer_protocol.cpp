@@ -1,6 +1,6 @@
 #include "peer_protocol.hpp"
 
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -23,15 +23,15 @@ double median(std::vector<double> v) {
   return 0.5 * (v[(v.size() - 1) / 2] + v[v.size() / 2]);
 }
 
-const ccd::PeerSceneReference* reference(std::size_t n) {
-  for (const auto& r : ccd::peer_scene_references())
+const ccdlab::bench::PeerSceneReference* reference(std::size_t n) {
+  for (const auto& r : ccdlab::bench::peer_scene_references())
     if (r.n == n) return &r;
   return nullptr;
 }
 
 std::string check(const std::vector<ccd::BodyPair>& pairs, std::size_t n, int frame, std::uint64_t want_pairs,
                   std::uint64_t want_checksum) {
-  const std::uint64_t sum = ccd::peer_pair_checksum(pairs);
+  const std::uint64_t sum = ccdlab::bench::peer_pair_checksum(pairs);
   if (pairs.size() == want_pairs && sum == want_checksum) return {};
   std::ostringstream os;
   os << "N=" << n << " frame " << frame << ": " << pairs.size() << " pairs, checksum " << std::hex << sum
@@ -44,8 +44,8 @@ std::string check(const std::vector<ccd::BodyPair>& pairs, std::size_t n, int fr
 PeerRun run_peer_protocol(ccd::BroadPhase& method, std::size_t n) {
   using Clock = std::chrono::steady_clock;
   PeerRun run;
-  const ccd::PeerSceneReference* ref = reference(n);
-  ccd::PeerScene scene(n, 1);
+  const ccdlab::bench::PeerSceneReference* ref = reference(n);
+  ccdlab::bench::PeerScene scene(n, 1);
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs;
   scene.boxes(boxes);
@@ -82,9 +82,9 @@ PeerRun run_peer_protocol(ccd::BroadPhase& method, std::size_t n) {
 std::string verify_peer_scene(ccd::BroadPhase& method, std::size_t max_n) {
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs;
-  for (const auto& ref : ccd::peer_scene_references()) {
+  for (const auto& ref : ccdlab::bench::peer_scene_references()) {
     if (ref.n > max_n) continue;
-    ccd::PeerScene scene(ref.n, 1);
+    ccdlab::bench::PeerScene scene(ref.n, 1);
     scene.boxes(boxes);
     method.find_pairs(boxes, pairs);
     if (auto e = check(pairs, ref.n, 0, ref.pairs_0, ref.checksum_0); !e.empty()) return e;

@@ -1,6 +1,5 @@
 // ccdlab's broad phases side by side with FCL 0.7, Bullet 3.24 (double precision) and
-// Boost.Geometry 1.74 on the shared moving-spheres scene (ccd/broad_phase/peer_scene.hpp,
-// /work/shared/peers/README.md), following the peers' protocol: frame 0 = setup (register
+// Boost.Geometry 1.74 on the shared moving-spheres scene (benchmarks/support/peer_scene.hpp), following the peers' protocol: frame 0 = setup (register
 // the bodies, first query; timed apart), frames 1-2 warm-up, frames 3-22 measured, median
 // per frame. A frame is the method's update + query + collection of its pairs; the scene's
 // motion is not timed. Both the thread's CPU time and wall-clock time are recorded (on a
@@ -29,7 +28,7 @@
 
 #include <ccd/broad_phase/brute_force.hpp>
 #include <ccd/broad_phase/grid.hpp>
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 #include <ccd/io/atomic_file.hpp>
 
 #include <nlohmann/json.hpp>
@@ -116,7 +115,7 @@ void set_message(RunResult& r, const std::string& m) {
 
 RunResult run_child(const PeerInfo& info, std::size_t n, const std::vector<FrameRef>& ref, double max_frame_ms) {
   RunResult r;
-  ccd::PeerScene scene(n, 1);
+  ccdlab::bench::PeerScene scene(n, 1);
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs;
   scene.boxes(boxes);
@@ -130,7 +129,7 @@ RunResult run_child(const PeerInfo& info, std::size_t n, const std::vector<Frame
   method->setup(scene, boxes, pairs);
   r.setup_ms = wall_ms() - s0;
   auto check = [&](int f) {
-    const std::uint64_t sum = ccd::peer_pair_checksum(pairs);
+    const std::uint64_t sum = ccdlab::bench::peer_pair_checksum(pairs);
     if (pairs.size() == ref[f].pairs && sum == ref[f].checksum) {
       ++r.frames_verified;
       return true;
@@ -289,7 +288,7 @@ int main(int argc, char** argv) {
     std::vector<FrameRef> ref(kFrames);
     const bool use_brute = n <= 10000;
     {
-      ccd::PeerScene scene(n, 1);
+      ccdlab::bench::PeerScene scene(n, 1);
       std::vector<ccd::Aabb> boxes;
       std::vector<ccd::BodyPair> pairs;
       ccd::BruteForce brute;
@@ -301,11 +300,11 @@ int main(int argc, char** argv) {
           brute.find_pairs(boxes, pairs);
         else
           grid.find_pairs(boxes, pairs);
-        ref[f] = {pairs.size(), ccd::peer_pair_checksum(pairs)};
+        ref[f] = {pairs.size(), ccdlab::bench::peer_pair_checksum(pairs)};
       }
     }
     std::string published = "not tabulated";
-    for (const auto& p : ccd::peer_scene_references())
+    for (const auto& p : ccdlab::bench::peer_scene_references())
       if (p.n == n) {
         const bool ok = ref[0].pairs == p.pairs_0 && ref[0].checksum == p.checksum_0 &&
                         ref[kFrames - 1].pairs == p.pairs_22 && ref[kFrames - 1].checksum == p.checksum_22;
@@ -424,7 +423,7 @@ int main(int argc, char** argv) {
   if (!json_path.empty()) {
     const nlohmann::json doc = {
         {"benchmark", "peers_bench"},
-        {"scene", "shared moving-spheres scene, seed 1 (/work/shared/peers/README.md)"},
+        {"scene", "shared moving-spheres scene, seed 1 (benchmarks/support/peer_scene.hpp)"},
         {"protocol", {{"warmup_frames", kWarmup}, {"measured_frames", kMeasured}, {"statistic", "median"},
                       {"frame", "update + query + pair collection"},
                       {"max_frame_s", max_frame_s}}},

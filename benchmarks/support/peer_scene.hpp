@@ -1,7 +1,7 @@
 #pragma once
 // The shared moving-spheres scene on which ccdlab's broad phases are compared with FCL,
-// Bullet and Boost.Geometry (definition: /work/shared/peers/README.md, summarised in
-// docs/broad_phases.md). A deterministic function of (N, seed): N spheres with radius
+// Bullet and Boost.Geometry (its definition, shared with the
+// peer programs, is this header's). A deterministic function of (N, seed): N spheres with radius
 // in [0.5, 1.5] in the cube [0, L]^3 (L from a fixed table or cbrt), moving linearly with
 // speed in [0, 10) and reflecting their centres at the walls, one frame = dt = 1/60.
 //
@@ -18,7 +18,7 @@
 #include <span>
 #include <vector>
 
-namespace ccd {
+namespace ccdlab::bench {
 
 /// Published checks of the peer scene for seed 1 (frame 22 = after 22 steps).
 struct PeerSceneReference {
@@ -40,7 +40,7 @@ double peer_scene_side(std::size_t n);
 /// splitmix64's finaliser of (min << 32 | max): the README's pair_hash.
 std::uint64_t peer_pair_hash(std::uint32_t i, std::uint32_t j);
 /// Sum mod 2^64 of peer_pair_hash over the pairs (order does not matter).
-std::uint64_t peer_pair_checksum(std::span<const BodyPair> pairs);
+std::uint64_t peer_pair_checksum(std::span<const ccd::BodyPair> pairs);
 
 /// Structure of arrays: positions, velocities, radii. Units: scene lengths, seconds.
 class PeerScene {
@@ -54,7 +54,7 @@ class PeerScene {
   /// Advances one frame: x = p + v dt, reflected at 0 and L (velocity component flips).
   void step();
   /// Box of sphere i is [p - r, p + r]; `out` is resized to size().
-  void boxes(std::vector<Aabb>& out) const;
+  void boxes(std::vector<ccd::Aabb>& out) const;
   /// Centre coordinate `axis` (0, 1, 2) of every sphere, and the radii: what a library
   /// that takes spheres (FCL) is given; boxes() is [p - r, p + r] of these.
   std::span<const double> centres(int axis) const { return p_[axis]; }
@@ -71,4 +71,4 @@ class PeerScene {
   std::vector<double> r_;
 };
 
-}  // namespace ccd
+}  // namespace ccdlab::bench

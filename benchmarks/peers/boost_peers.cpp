@@ -24,10 +24,10 @@ namespace bgi = boost::geometry::index;
 
 class BoostRstarPeer final : public PeerMethod {
  public:
-  void setup(const ccd::PeerScene& scene, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void setup(const ccdlab::bench::PeerScene& scene, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     frame(scene, boxes, out);
   }
-  void frame(const ccd::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void frame(const ccdlab::bench::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     out.clear();
     values_.resize(boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -57,10 +57,10 @@ class BoostRstarPeer final : public PeerMethod {
 class RegistryMethod final : public PeerMethod {
  public:
   explicit RegistryMethod(std::unique_ptr<ccd::BroadPhase> m) : m_(std::move(m)) {}
-  void setup(const ccd::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void setup(const ccdlab::bench::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     m_->find_pairs(boxes, out);
   }
-  void frame(const ccd::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
+  void frame(const ccdlab::bench::PeerScene&, std::span<const ccd::Aabb> boxes, std::vector<ccd::BodyPair>& out) override {
     m_->find_pairs(boxes, out);
   }
   std::uint64_t reported_pairs() const override { return 0; }

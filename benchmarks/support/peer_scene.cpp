@@ -1,4 +1,4 @@
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 
 #include <bit>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <numbers>
 #include <random>
 
-namespace ccd {
+namespace ccdlab::bench {
 
 namespace {
 
@@ -65,9 +65,9 @@ std::uint64_t peer_pair_hash(std::uint32_t i, std::uint32_t j) {
   return x ^ (x >> 31);
 }
 
-std::uint64_t peer_pair_checksum(std::span<const BodyPair> pairs) {
+std::uint64_t peer_pair_checksum(std::span<const ccd::BodyPair> pairs) {
   std::uint64_t sum = 0;
-  for (const BodyPair& p : pairs) sum += peer_pair_hash(p.a, p.b);
+  for (const ccd::BodyPair& p : pairs) sum += peer_pair_hash(p.a, p.b);
   return sum;
 }
 
@@ -119,12 +119,12 @@ void PeerScene::step() {
   }
 }
 
-void PeerScene::boxes(std::vector<Aabb>& out) const {
+void PeerScene::boxes(std::vector<ccd::Aabb>& out) const {
   out.resize(r_.size());
   for (std::size_t i = 0; i < r_.size(); ++i) {
     const double r = r_[i];
-    out[i].lo = Vec3(p_[0][i] - r, p_[1][i] - r, p_[2][i] - r);
-    out[i].hi = Vec3(p_[0][i] + r, p_[1][i] + r, p_[2][i] + r);
+    out[i].lo = ccd::Vec3(p_[0][i] - r, p_[1][i] - r, p_[2][i] - r);
+    out[i].hi = ccd::Vec3(p_[0][i] + r, p_[1][i] + r, p_[2][i] + r);
   }
 }
 
@@ -151,4 +151,4 @@ std::uint64_t PeerScene::state_hash() const {
   return h;
 }
 
-}  // namespace ccd
+}  // namespace ccdlab::bench

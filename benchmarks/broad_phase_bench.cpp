@@ -1,5 +1,5 @@
 // ms per frame of every registered broad phase on the shared moving-spheres scene
-// (ccd/broad_phase/peer_scene.hpp), following the peers' protocol: 2 warm-up frames, 20
+// (benchmarks/support/peer_scene.hpp), following the peers' protocol: 2 warm-up frames, 20
 // measured frames, median reported as the benchmark's time (manual time, one iteration):
 // the median of the thread's CPU time per frame (robust to other jobs on a shared
 // machine); the counter wall_ms is the median wall-clock time.

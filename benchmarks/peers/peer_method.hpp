@@ -16,7 +16,7 @@
 // frame; reported_pairs() tells how many the library gave before that filter, so the
 // output can say which methods were filtered.
 #include <ccd/broad_phase/broad_phase.hpp>
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -31,10 +31,10 @@ class PeerMethod {
  public:
   virtual ~PeerMethod() = default;
   /// Registers the scene's bodies and writes frame 0's pairs into `out`.
-  virtual void setup(const ccd::PeerScene& scene, std::span<const ccd::Aabb> boxes,
+  virtual void setup(const ccdlab::bench::PeerScene& scene, std::span<const ccd::Aabb> boxes,
                      std::vector<ccd::BodyPair>& out) = 0;
   /// One frame: update from the moved scene, query, write the pairs into `out`.
-  virtual void frame(const ccd::PeerScene& scene, std::span<const ccd::Aabb> boxes,
+  virtual void frame(const ccdlab::bench::PeerScene& scene, std::span<const ccd::Aabb> boxes,
                      std::vector<ccd::BodyPair>& out) = 0;
   /// Pairs the library reported in the last call, before the exact filter (with
   /// duplicates, if it reports any).

@@ -1,5 +1,5 @@
 // `grid` with 1 and 2 threads (GridOptions::threads) on the shared moving-spheres scene
-// (ccd/broad_phase/peer_scene.hpp), peers' protocol: frame 0 builds, frames 1-2 warm up,
+// (benchmarks/support/peer_scene.hpp), peers' protocol: frame 0 builds, frames 1-2 warm up,
 // frames 3-22 measured. Not through the registry (whose `grid` is serial).
 // Reported time: median WALL-clock ms per frame (threads only pay off in wall time);
 // counters: cpu_ms = median process CPU ms per frame (all threads; on an idle machine
@@ -8,7 +8,7 @@
 //
 //   grid_threads_bench [--sizes=100000,1000000] [benchmark flags]
 #include <ccd/broad_phase/grid.hpp>
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -34,7 +34,7 @@ double median(std::vector<double> v) {
 
 void run(benchmark::State& state, std::size_t n, unsigned threads) {
   for (auto _ : state) {
-    ccd::PeerScene scene(n, 1);
+    ccdlab::bench::PeerScene scene(n, 1);
     ccd::UniformGrid grid(ccd::GridOptions{.threads = threads});
     std::vector<ccd::Aabb> boxes;
     std::vector<ccd::BodyPair> pairs;
