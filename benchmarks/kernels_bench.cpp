@@ -7,24 +7,25 @@
 //
 // pipeline/continuous/BOUND and pipeline/discrete/aabb: one step (dt = 1/60) of the shared 100,000-body
 // peer scene (benchmarks/support/peer_scene.hpp: its positions, velocities and radii, linear
-// motion, no walls during the step). A continuous pipeline is a space-time bound (capsule,
-// swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's pair test + the
-// exact first contact (ccd/truth/pair_contact.hpp) on the survivors; the discrete one is the
-// `aabb` bound at the step's start + `grid` + the bound's test + the distance test at that
-// instant, as in experiments/runner.cpp. Counters: candidates (broad-phase pairs), passed
-// (after the bound's test), confirmed (contacts).
+// motion, no walls during the step), through the step pipeline the runner calls
+// (ccd/pipeline/step_pipeline.hpp). A continuous pipeline is a space-time bound (capsule,
+// swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's
+// pair test + the exact first contact on the survivors; the discrete one is the `aabb`
+// bound at the step's start + `grid` + the bound's test + the narrow phase's sample test
+// (ccd::spheres_touch). Counters: candidates (broad-phase pairs), passed (after the
+// bound's test), confirmed (contacts).
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
 #include <ccd/motion/trajectory.hpp>
+#include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/queries/ray_sphere.hpp>
 #include <ccd/queries/sphere_sphere_contact.hpp>
 #include <ccd/scene/scene.hpp>
-#include <ccd/truth/pair_contact.hpp>
 
 #include <benchmark/benchmark.h>
 
-#include <limits>
+#include <memory>
 #include <utility>
 #include <random>
 #include <vector>
@@ -115,40 +116,18 @@ void pipeline(benchmark::State& state, const char* bound_name) {
   const PipelineScene& s = pipeline_scene();
   const ccd::BoundSpec spec = ccd::parse_bound(bound_name);
   const bool continuous = spec.info->knowledge != ccd::Knowledge::Instant;
-  auto bound = spec.make();
-  ccd::UniformGrid grid;
+  ccd::StepPipeline step_pipeline(spec.make(), spec.info->knowledge, std::make_unique<ccd::UniformGrid>());
   ccd::StepContext ctx;
   ctx.t0 = 0.0;
   ctx.t1 = continuous ? ccdlab::bench::PeerScene::kDt : 0.0;
   ctx.start = s.start;
   ctx.exact = spec.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.acceleration_bound = 0.0;  // linear motion: the true bound
-  std::vector<ccd::Aabb> boxes;
-  std::vector<ccd::BodyPair> pairs, passed;
-  std::size_t confirmed = 0;
-  for (auto _ : state) {
-    bound->prepare(ctx, boxes);
-    grid.find_pairs(boxes, pairs);
-    passed.clear();
-    for (const ccd::BodyPair& p : pairs) {
-      double earliest = ctx.t0;
-      if (bound->test(p.a, p.b, &earliest)) passed.push_back(p);
-    }
-    confirmed = 0;
-    for (const ccd::BodyPair& p : passed) {
-      if (continuous) {
-        confirmed += ccd::pair_first_contact(s.traj, p.a, p.b, ctx.t0, ctx.t1).has_value();
-      } else {
-        const ccd::Vec3 d = s.start[p.a].position - s.start[p.b].position;
-        const double R = s.start[p.a].radius + s.start[p.b].radius;
-        const double dd = d.squaredNorm(), rr = R * R;
-        confirmed += dd - rr <= 8.0 * std::numeric_limits<double>::epsilon() * (dd + rr);
-      }
-    }
-  }
-  state.counters["candidates"] = static_cast<double>(pairs.size());
-  state.counters["passed"] = static_cast<double>(passed.size());
-  state.counters["confirmed"] = static_cast<double>(confirmed);
+  ccd::StepResult step;
+  for (auto _ : state) step_pipeline.run(ctx, s.traj, step);
+  state.counters["candidates"] = static_cast<double>(step.candidates.size());
+  state.counters["passed"] = static_cast<double>(step.passed.size());
+  state.counters["confirmed"] = static_cast<double>(step.contacts.size());
 }
 
 }  // namespace

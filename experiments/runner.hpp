@@ -1,6 +1,7 @@
 #pragma once
 // Runs one method at one timestep over a scene and measures it against exact ground
-// truth (definitions in docs/experiments.md):
+// truth (definitions in docs/experiments.md). Each step is one call of the step pipeline
+// (ccd/pipeline/step_pipeline.hpp); this file only counts, times and matches:
 //  - samples t_k = k * dt (a product, never accumulated), k = 0 .. floor(T / dt);
 //  - a discrete method (an Instant bound) checks overlap at each sample: an event is
 //    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
@@ -17,6 +18,8 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace ccdlab {
 
@@ -45,7 +48,7 @@ struct RunRecord {
   std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
   std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
   std::uint64_t false_positives = 0;   ///< bound candidates with no contact at the sample/in the step
-  double max_penetration = 0.0;        ///< largest r_a + r_b - |d| at first detection
+  double max_penetration = 0.0;        ///< largest -signed distance (narrow phase) at first detection
   double mean_penetration = 0.0;
   double mean_lag = 0.0;               ///< mean detection time - enter over detected events
   double max_lag = 0.0;
@@ -55,7 +58,9 @@ struct RunRecord {
   double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
   double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
   double seconds_per_simulated_second = 0.0;
-  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap, sweep; else 0)
+  /// The broad phase's own counters (ccd::BroadPhase::counters), each summed over steps,
+  /// by name (e.g. sap's and sweep's "swaps"; none for grid).
+  std::vector<std::pair<std::string, std::uint64_t>> counters;
   std::uint64_t rebuilds = 0;          ///< steps at which the broad phase built its structure from scratch
                                        ///< (every step for brute, grid, hgrid, rtree)
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have

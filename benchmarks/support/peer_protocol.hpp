@@ -18,7 +18,7 @@ struct PeerRun {
   double min_ms = 0.0;          ///< fastest measured frame, thread CPU ms
   double median_wall_ms = 0.0;  ///< median wall-clock ms per measured frame
   double pairs_per_frame = 0.0;  ///< mean over the measured frames
-  double swaps_per_frame = 0.0;  ///< mean BroadPhaseStats::swaps over the measured frames
+  double swaps_per_frame = 0.0;  ///< mean of the method's "swaps" counter (BroadPhase::counters) over the measured frames
   int rebuilds = 0;              ///< measured frames with BroadPhaseStats::rebuilt
   std::string error;             ///< non-empty when frame 0 or 22 differs from the published table
 };

@@ -9,15 +9,6 @@
 namespace ccdlab {
 namespace {
 
-const char* knowledge(ccd::Knowledge k) {
-  switch (k) {
-    case ccd::Knowledge::Instant: return "instant";
-    case ccd::Knowledge::Exact: return "exact";
-    case ccd::Knowledge::Bounded: return "bounded";
-  }
-  return "?";
-}
-
 int run_methods(std::span<const std::string> args) {
   if (!args.empty() && args[0] == "--names") {
     for (const std::string& m : all_method_names()) std::cout << m << "\n";
@@ -33,7 +24,7 @@ int run_methods(std::span<const std::string> args) {
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string name(b.name);
     if (b.parameterised) name += ":M";
-    std::cout << "  " << std::setw(18) << name << std::setw(9) << knowledge(b.knowledge) << std::setw(14)
+    std::cout << "  " << std::setw(18) << name << std::setw(9) << ccd::to_string(b.knowledge) << std::setw(14)
               << (b.knowledge == ccd::Knowledge::Instant ? "at samples" : b.conservative ? "yes" : "no")
               << b.description << "\n";
   }

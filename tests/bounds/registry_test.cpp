@@ -4,6 +4,8 @@
 #include <tests/bounds/bound_test_support.hpp>
 
 #include <catch2/catch.hpp>
+
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -133,9 +135,10 @@ TEST_CASE("no conservative bound misses a constructed contact", "[bounds][zero_m
       bounds[b]->prepare(ctx, boxes);
       for (std::size_t i = 0; i < cb.tc.size(); ++i) {
         const auto a = static_cast<std::uint32_t>(2 * i);
-        double earliest = -1.0;
         const bool box_ok = boxes[a].overlaps(boxes[a + 1]);
-        const bool test_ok = bounds[b]->test(a, a + 1, &earliest);
+        const ccd::PairTest test = bounds[b]->test(a, a + 1);
+        const bool test_ok = test.possible();
+        const double earliest = test.earliest;
         const bool time_ok = earliest <= cb.tc[i];
         if (!(box_ok && test_ok && time_ok)) {
           if (++misses <= 5)
@@ -170,7 +173,7 @@ TEST_CASE("instant bounds report every pair touching at the sample time", "[boun
       bound->prepare(cb.step.context(ccd::Knowledge::Instant), boxes);
       for (std::size_t i = 0; i < cb.tc.size(); ++i) {
         const auto a = static_cast<std::uint32_t>(2 * i);
-        if (!(boxes[a].overlaps(boxes[a + 1]) && bound->test(a, a + 1, nullptr))) {
+        if (!(boxes[a].overlaps(boxes[a + 1]) && bound->test(a, a + 1).possible())) {
           if (++misses <= 5) FAIL_CHECK(info.name << " misses a " << cb.kind[i] << " pair");
         }
       }
@@ -192,8 +195,10 @@ TEST_CASE("instant bounds reject separated pairs", "[bounds][registry]") {
   auto sphere = ccd::parse_bound("sphere").make();
   sphere->prepare(st.context(ccd::Knowledge::Instant), boxes);
   CHECK(boxes[0].overlaps(boxes[1]));
-  CHECK_FALSE(sphere->test(0, 1, nullptr));
+  CHECK(sphere->test(0, 1).status == ccd::PairTest::Status::Disjoint);
+  CHECK(sphere->test(0, 1).earliest == std::numeric_limits<double>::infinity());
   auto aabb = ccd::parse_bound("aabb").make();
   aabb->prepare(st.context(ccd::Knowledge::Instant), boxes);
-  CHECK(aabb->test(0, 1, nullptr));
+  CHECK(aabb->test(0, 1).status == ccd::PairTest::Status::Possible);
+  CHECK(aabb->test(0, 1).earliest == 0.0);  // the sample time: an instant bound carries no timing
 }
