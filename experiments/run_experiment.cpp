@@ -128,7 +128,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
     if (r.cancelled) return json();
 
   json out;
-  out["format"] = "ccdlab-results/1";
+  out["format"] = "ccdlab-results/2";
   out["experiment"] = experiment_to_json(e);
   out["experiment"]["acceleration_bound_used"] = in.acceleration_bound;
   out["scene"] = scene_summary(e, scene, traj);
@@ -158,7 +158,7 @@ json merge_results(const std::vector<json>& shards) {
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const json& r = shards[s];
     const std::string which = "input " + std::to_string(s + 1);
-    if (r.value("format", "") != "ccdlab-results/1") throw std::runtime_error(which + ": not a ccdlab-results/1 file");
+    if (r.value("format", "") != "ccdlab-results/2") throw std::runtime_error(which + ": not a ccdlab-results/2 file");
     if (r["experiment"] != first["experiment"])
       throw std::runtime_error(which + ": a different experiment than input 1");
     if (r["truth"]["events"] != first["truth"]["events"] || r["scene"]["bodies"] != first["scene"]["bodies"])

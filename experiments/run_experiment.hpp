@@ -1,6 +1,6 @@
 #pragma once
 // Runs a whole experiment: loads or generates the scene, computes the ground truth once,
-// runs every (method, dt) job on a pool of threads, and assembles a `ccdlab-results/1`
+// runs every (method, dt) job on a pool of threads, and assembles a `ccdlab-results/2`
 // document (docs/experiments.md). Counts do not depend on the thread count: every job is
 // independent and results are stored by job index.
 #include "experiment.hpp"

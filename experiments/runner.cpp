@@ -47,7 +47,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   // Times are matched with this slack: the truth is accurate to 1e-9 relative to T.
   const double slack = 1e-9 * T;
 
-  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase->make());
+  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make());
   std::vector<ccd::BodyState> states;
   ccd::StepResult step;
   ccd::StateCursor cursor(traj);
@@ -134,7 +134,8 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   RunRecord r;
   r.method = method.name;
   r.bound = method.name.substr(0, method.name.find('/'));
-  r.broad_phase = std::string(method.broad_phase->name);
+  r.broad_phase = std::string(method.broad_phase.info->name);
+  r.options = options_json(method);
   r.knowledge = std::string(ccd::to_string(method.bound.info->knowledge));
   r.continuous = method.continuous();
   r.conservative = method.bound.info->conservative;
@@ -218,6 +219,7 @@ nlohmann::json to_json(const RunRecord& r) {
   return {{"method", r.method},
           {"bound", r.bound},
           {"broad_phase", r.broad_phase},
+          {"options", r.options},
           {"knowledge", r.knowledge},
           {"continuous", r.continuous},
           {"conservative", r.conservative},

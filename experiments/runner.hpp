@@ -36,6 +36,7 @@ struct RunRecord {
   std::string method;
   std::string bound;
   std::string broad_phase;
+  nlohmann::json options;      ///< what the method ran with: {"bound": {...}, "broad_phase": {...}}
   std::string knowledge;       ///< instant | exact | bounded
   bool continuous = false;
   bool conservative = false;   ///< the bound's claim under its knowledge

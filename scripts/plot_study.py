@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Charts and a summary table of one stability study (docs/studies.md), combining the
-results files of its experiments (ccdlab-results/1).
+results files of its experiments (ccdlab-results/2).
 
 usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--format png,svg]
                                               [--ccdlab PATH]
@@ -464,7 +464,7 @@ def time_against(results, outdir, formats, stem, xkey, xlabel, title):
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
-    ap.add_argument("results", nargs="+", help="the study's ccdlab-results/1 files")
+    ap.add_argument("results", nargs="+", help="the study's ccdlab-results/2 files")
     ap.add_argument("-o", "--output", help="output folder (default results/studies/STUDY/plots)")
     ap.add_argument("--format", default="png", help="comma-separated formats (default png)")
     ap.add_argument("--ccdlab", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",

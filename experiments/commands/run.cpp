@@ -141,7 +141,7 @@ extern const Command kRunCommand = {
     "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--quiet]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
-    "ground truth and writes a ccdlab-results/1 file (docs/experiments.md).\n"
+    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md).\n"
     "\n"
     "  -o, --output FILE  results file (default results/NAME.json); written atomically,\n"
     "                     never partially (Ctrl-C leaves no file)\n"

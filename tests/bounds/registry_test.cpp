@@ -1,5 +1,6 @@
 // Registry-wide tests: parsing, containment of random motions in every bound's box, and
 // zero misses of every conservative bound on constructed contacts.
+#include <bounds/horn_bound.hpp>
 #include <bounds/registry.hpp>
 #include <tests/bounds/bound_test_support.hpp>
 
@@ -36,8 +37,11 @@ TEST_CASE("the bound registry has unique names and consistent entries", "[bounds
     CHECK(names.insert(b.name).second);
     CHECK(!b.description.empty());
     CHECK(b.conservative);  // every bound here is conservative under its knowledge
-    if (b.parameterised) CHECK(b.default_parameter >= 1);
-    CHECK(b.make(b.parameterised ? b.default_parameter : 0) != nullptr);
+    for (const ccd::ParameterSpec& p : b.parameters) {
+      CHECK(!p.unit.empty());
+      CHECK(p.range.contains(p.default_value));
+    }
+    CHECK(b.make() != nullptr);
   }
   for (const char* n : {"sphere", "aabb", "swept_aabb", "capsule", "horn", "horn_sat", "enclosing_sphere"})
     CHECK(names.count(n) == 1);
@@ -51,13 +55,25 @@ TEST_CASE("parse_bound resolves names and parameters", "[bounds][registry]") {
   }
   SECTION("default parameter") {
     const ccd::BoundSpec s = ccd::parse_bound("horn");
-    CHECK(s.parameter == s.info->default_parameter);
+    CHECK(s.options.integer("pieces") == 4);
+    CHECK(s.options.to_json() == nlohmann::json{{"pieces", 4}});
   }
-  SECTION("explicit parameter") { CHECK(ccd::parse_bound("horn_sat:7").parameter == 7); }
+  SECTION("explicit parameter, bare or named") {
+    CHECK(ccd::parse_bound("horn_sat:7").options.integer("pieces") == 7);
+    CHECK(ccd::parse_bound("horn_sat:pieces=7").options.integer("pieces") == 7);
+    const auto horn = ccd::parse_bound("horn:3").make();
+    CHECK(dynamic_cast<const ccd::HornBound&>(*horn).pieces() == 3);
+  }
+  SECTION("a bound without options has an empty table") {
+    CHECK(ccd::parse_bound("capsule").options.to_json() == nlohmann::json::object());
+    CHECK_THROWS_WITH(ccd::parse_bound("capsule:4"), Catch::Contains("it takes none"));
+  }
   SECTION("errors") {
     CHECK_THROWS_AS(ccd::parse_bound("hron"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:0"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:-2"), std::invalid_argument);
+    CHECK_THROWS_WITH(ccd::parse_bound("horn:2000"), Catch::Contains("pieces") && Catch::Contains("[1, 1024]"));
+    CHECK_THROWS_WITH(ccd::parse_bound("horn:pices=2"), Catch::Contains("unknown parameter 'pices'"));
     CHECK_THROWS_AS(ccd::parse_bound("horn:4x"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("capsule:3"), std::invalid_argument);
@@ -168,7 +184,7 @@ TEST_CASE("instant bounds report every pair touching at the sample time", "[boun
     const ccd::test::ContactBatch cb = ccd::test::contact_batch(rng, 20000, 0.0, 10.0);
     for (const ccd::BoundInfo& info : ccd::bound_registry()) {
       if (info.knowledge != ccd::Knowledge::Instant) continue;
-      auto bound = info.make(0);
+      auto bound = info.make();
       std::vector<ccd::Aabb> boxes;
       bound->prepare(cb.step.context(ccd::Knowledge::Instant), boxes);
       for (std::size_t i = 0; i < cb.tc.size(); ++i) {

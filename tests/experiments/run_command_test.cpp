@@ -64,6 +64,12 @@ TEST_CASE("ccdlab run rejects bad experiments with exit 2 and writes nothing", "
     CHECK(err.find("methods[1]") != std::string::npos);
     CHECK(err.find("sap") != std::string::npos);  // the list of valid broad phases
   }
+  SECTION("bad method option: the field and the option are named") {
+    e["methods"] = {"aabb/sap", "aabb/grid:cell=-1"};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("e.json: methods[1]") != std::string::npos);
+    CHECK(err.find("parameter 'cell'") != std::string::npos);
+  }
   SECTION("dt <= 0") {
     e["dt"] = {0.1, 0.0};
     CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);

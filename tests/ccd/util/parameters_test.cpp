@@ -1,13 +1,14 @@
-#include <experiments/generators/parameters.hpp>
+#include <ccd/util/parameters.hpp>
+#include <experiments/generators/generator_parameters.hpp>
 
 #include <catch2/catch.hpp>
 #include <limits>
 #include <stdexcept>
 #include <vector>
 
-using ccdlab::ParameterKind;
-using ccdlab::ParameterSpec;
-using ccdlab::ParameterValue;
+using ccd::ParameterKind;
+using ccd::ParameterSpec;
+using ccd::ParameterValue;
 using nlohmann::json;
 
 namespace {
@@ -21,7 +22,7 @@ constexpr ParameterSpec kSpecs[] = {
 
 std::string error_of(const std::vector<ParameterValue>& given) {
   try {
-    ccdlab::resolve_parameters(kSpecs, given);
+    ccd::resolve_parameters(kSpecs, given);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -30,7 +31,7 @@ std::string error_of(const std::vector<ParameterValue>& given) {
 
 std::string text_error_of(const std::string& argument) {
   try {
-    ccdlab::parameter_value_from_text(argument);
+    ccd::parameter_value_from_text(argument);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -39,7 +40,7 @@ std::string text_error_of(const std::string& argument) {
 
 std::string json_error_of(const json& j) {
   try {
-    ccdlab::parameter_values_from_json(j);
+    ccd::parameter_values_from_json(j);
   } catch (const std::invalid_argument& e) {
     return e.what();
   }
@@ -49,7 +50,7 @@ std::string json_error_of(const json& j) {
 }  // namespace
 
 TEST_CASE("missing parameters take their defaults", "[generators]") {
-  const ccdlab::GeneratorParameters p = ccdlab::resolve_parameters(kSpecs, {});
+  const ccd::ParameterSet p = ccd::resolve_parameters(kSpecs, {});
   CHECK(p.integer("seed") == 1);
   CHECK(p.integer("bodies") == 1000);
   CHECK(p.number("fraction") == 0.02);
@@ -59,22 +60,22 @@ TEST_CASE("missing parameters take their defaults", "[generators]") {
 }
 
 TEST_CASE("command-line text and JSON give the same parameters", "[generators]") {
-  const std::vector<ParameterValue> from_text = {ccdlab::parameter_value_from_text("bodies=2000"),
-                                                 ccdlab::parameter_value_from_text("seed=7"),
-                                                 ccdlab::parameter_value_from_text("offset=1e6,-2.5,1.25e-1"),
-                                                 ccdlab::parameter_value_from_text("fraction=.125")};
-  const std::vector<ParameterValue> from_json = ccdlab::parameter_values_from_json(
+  const std::vector<ParameterValue> from_text = {ccd::parameter_value_from_text("bodies=2000"),
+                                                 ccd::parameter_value_from_text("seed=7"),
+                                                 ccd::parameter_value_from_text("offset=1e6,-2.5,1.25e-1"),
+                                                 ccd::parameter_value_from_text("fraction=.125")};
+  const std::vector<ParameterValue> from_json = ccd::parameter_values_from_json(
       json::parse(R"({"bodies": 2000, "seed": 7, "offset": [1e6, -2.5, 0.125], "fraction": 0.125})"));
-  const json a = ccdlab::resolve_parameters(kSpecs, from_text).to_json();
-  const json b = ccdlab::resolve_parameters(kSpecs, from_json).to_json();
+  const json a = ccd::resolve_parameters(kSpecs, from_text).to_json();
+  const json b = ccd::resolve_parameters(kSpecs, from_json).to_json();
   CHECK(a == b);
   CHECK(a["offset"] == json::array({1e6, -2.5, 0.125}));
   SECTION("a scalar offset applies to all axes") {
-    const ccdlab::GeneratorParameters p =
-        ccdlab::resolve_parameters(kSpecs, std::vector{ccdlab::parameter_value_from_text("offset=1e6")});
+    const ccd::ParameterSet p =
+        ccd::resolve_parameters(kSpecs, std::vector{ccd::parameter_value_from_text("offset=1e6")});
     CHECK(p.vector("offset") == ccd::Vec3(1e6, 1e6, 1e6));
   }
-  SECTION("null JSON means no parameters") { CHECK(ccdlab::parameter_values_from_json(json()).empty()); }
+  SECTION("null JSON means no parameters") { CHECK(ccd::parameter_values_from_json(json()).empty()); }
 }
 
 TEST_CASE("bad parameters name the parameter and the rule", "[generators]") {
@@ -122,7 +123,7 @@ TEST_CASE("command-line values must be numbers, read in full", "[generators]") {
   CHECK(text_error_of("horizon=1e999") == "parameter 'horizon': '1e999' is not a number");
   CHECK(text_error_of("bodies") == "expected NAME=VALUE, got 'bodies'");
   CHECK(text_error_of("=3") == "expected NAME=VALUE, got '=3'");
-  CHECK(ccdlab::parameter_value_from_text("offset=-1e6").values == std::vector<double>{-1e6});
+  CHECK(ccd::parameter_value_from_text("offset=-1e6").values == std::vector<double>{-1e6});
 }
 
 TEST_CASE("JSON values must be numbers or arrays of numbers", "[generators]") {
@@ -136,11 +137,41 @@ TEST_CASE("JSON values must be numbers or arrays of numbers", "[generators]") {
 }
 
 TEST_CASE("range descriptions read as rules", "[generators]") {
-  CHECK(ccdlab::describe_range(kSpecs[1]) == "an integer in [0, 1e+08]");
-  CHECK(ccdlab::describe_range(kSpecs[3]) == "a number in (0, 0.5)");
-  CHECK(ccdlab::describe_range({"x", 0.0, "", ParameterKind::Real, {0.0, std::numeric_limits<double>::max(), true, false}}) ==
+  CHECK(ccd::describe_range(kSpecs[1]) == "an integer in [0, 1e+08]");
+  CHECK(ccd::describe_range(kSpecs[3]) == "a number in (0, 0.5)");
+  CHECK(ccd::describe_range({"x", 0.0, "", ParameterKind::Real, {0.0, std::numeric_limits<double>::max(), true, false}}) ==
         "a number > 0");
-  CHECK(ccdlab::describe_range({"x", 0.0, "", ParameterKind::Real, {}}) == "a finite number");
-  CHECK(ccdlab::format_number(0.1) == "0.1");
-  CHECK(ccdlab::format_number(1e6) == "1e+06");
+  CHECK(ccd::describe_range({"x", 0.0, "", ParameterKind::Real, {}}) == "a finite number");
+  CHECK(ccd::format_number(0.1) == "0.1");
+  CHECK(ccd::format_number(1e6) == "1e+06");
+}
+
+TEST_CASE("registry options are read from NAME:OPTIONS text", "[parameters]") {
+  using ccd::option_values_from_text;
+  SECTION("name=value pairs, in order") {
+    const auto v = option_values_from_text("cell=2.5,threads=2", "");
+    REQUIRE(v.size() == 2);
+    CHECK(v[0].name == "cell");
+    CHECK(v[0].values == std::vector<double>{2.5});
+    CHECK(v[1].name == "threads");
+    CHECK(v[1].values == std::vector<double>{2.0});
+  }
+  SECTION("a bare first value is the table's first parameter: horn:4 is horn:pieces=4") {
+    const auto v = option_values_from_text("4", "pieces");
+    REQUIRE(v.size() == 1);
+    CHECK(v[0].name == "pieces");
+    CHECK(v[0].values == std::vector<double>{4.0});
+  }
+  SECTION("errors name the bad part") {
+    CHECK_THROWS_WITH(option_values_from_text("4", ""), Catch::Contains("expected NAME=VALUE, got '4'"));
+    CHECK_THROWS_WITH(option_values_from_text("cell=1,2", ""), Catch::Contains("expected NAME=VALUE, got '2'"));
+    CHECK_THROWS_WITH(option_values_from_text("cell=x", ""), Catch::Contains("parameter 'cell': 'x' is not a number"));
+    CHECK_THROWS_WITH(option_values_from_text("cell=1,", ""), Catch::Contains("empty option"));
+    CHECK_THROWS_WITH(option_values_from_text("=1", ""), Catch::Contains("expected NAME=VALUE"));
+  }
+}
+
+TEST_CASE("a parameter is described with its default, unit, doc and range", "[parameters]") {
+  constexpr ParameterSpec cell{"cell", 0.0, "smallest cell size", ParameterKind::Real, {0.0, 1e6}, "m"};
+  CHECK(ccd::describe_parameter(cell) == "cell=0 m (smallest cell size; a number in [0, 1e+06])");
 }

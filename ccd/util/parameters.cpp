@@ -1,4 +1,4 @@
-#include <experiments/generators/parameters.hpp>
+#include <ccd/util/parameters.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace ccdlab {
+namespace ccd {
 namespace {
 
 std::string in_quotes(std::string_view s) {
@@ -74,6 +74,35 @@ ParameterValue parameter_value_from_text(std::string_view argument) {
   return v;
 }
 
+std::vector<ParameterValue> option_values_from_text(std::string_view options, std::string_view first_parameter) {
+  std::vector<ParameterValue> out;
+  std::string_view rest = options;
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const std::string_view item = rest.substr(0, comma);
+    const std::size_t eq = item.find('=');
+    if (item.empty()) throw std::invalid_argument("empty option in " + in_quotes(options));
+    if (eq == std::string_view::npos) {
+      if (first_parameter.empty() || !out.empty())
+        throw std::invalid_argument("expected NAME=VALUE, got " + in_quotes(item));
+      out.push_back({std::string(first_parameter), {parse_number(first_parameter, item)}});
+    } else {
+      if (eq == 0) throw std::invalid_argument("expected NAME=VALUE, got " + in_quotes(item));
+      const std::string name(item.substr(0, eq));
+      out.push_back({name, {parse_number(name, item.substr(eq + 1))}});
+    }
+    if (comma == std::string_view::npos) break;
+    rest = rest.substr(comma + 1);
+  }
+  return out;
+}
+
+std::string describe_parameter(const ParameterSpec& spec) {
+  std::string s = std::string(spec.name) + "=" + format_number(spec.default_value);
+  if (!spec.unit.empty()) s += " " + std::string(spec.unit);
+  return s + " (" + std::string(spec.doc) + "; " + describe_range(spec) + ")";
+}
+
 std::vector<ParameterValue> parameter_values_from_json(const nlohmann::json& params) {
   std::vector<ParameterValue> out;
   if (params.is_null()) return out;
@@ -100,7 +129,7 @@ std::vector<ParameterValue> parameter_values_from_json(const nlohmann::json& par
   return out;
 }
 
-GeneratorParameters resolve_parameters(std::span<const ParameterSpec> specs, std::span<const ParameterValue> given) {
+ParameterSet resolve_parameters(std::span<const ParameterSpec> specs, std::span<const ParameterValue> given) {
   auto spec_of = [&](std::string_view name) {
     return std::find_if(specs.begin(), specs.end(), [&](const ParameterSpec& s) { return s.name == name; });
   };
@@ -115,8 +144,8 @@ GeneratorParameters resolve_parameters(std::span<const ParameterSpec> specs, std
     throw std::invalid_argument(std::string(unknown_count == 1 ? "unknown parameter " : "unknown parameters ") +
                                 unknown + "; valid parameters: " + valid_names(specs));
 
-  GeneratorParameters out;
-  for (const ParameterSpec& spec : specs) out.values_.emplace_back(spec, ccd::Vec3::Constant(spec.default_value));
+  ParameterSet out;
+  for (const ParameterSpec& spec : specs) out.values_.emplace_back(spec, Vec3::Constant(spec.default_value));
   std::vector<bool> seen(specs.size(), false);
   for (const ParameterValue& v : given) {
     const std::size_t i = static_cast<std::size_t>(spec_of(v.name) - specs.begin());
@@ -133,37 +162,37 @@ GeneratorParameters resolve_parameters(std::span<const ParameterSpec> specs, std
         fail(spec.name, "must be " + describe_range(spec) + " (got " + format_number(x) + ")");
     }
     out.values_[i].second =
-        v.values.size() == 3 ? ccd::Vec3(v.values[0], v.values[1], v.values[2]) : ccd::Vec3::Constant(v.values[0]);
+        v.values.size() == 3 ? Vec3(v.values[0], v.values[1], v.values[2]) : Vec3::Constant(v.values[0]);
   }
   return out;
 }
 
-const std::pair<ParameterSpec, ccd::Vec3>& GeneratorParameters::find(std::string_view name) const {
+const std::pair<ParameterSpec, Vec3>& ParameterSet::find(std::string_view name) const {
   for (const auto& entry : values_)
     if (entry.first.name == name) return entry;
-  throw std::logic_error("generator parameter '" + std::string(name) + "' is not declared in its table");
+  throw std::logic_error("parameter '" + std::string(name) + "' is not declared in its table");
 }
 
-double GeneratorParameters::number(std::string_view name) const {
+double ParameterSet::number(std::string_view name) const {
   const auto& [spec, value] = find(name);
   if (spec.kind == ParameterKind::Vector) throw std::logic_error("parameter '" + std::string(name) + "' is a vector");
   return value.x();
 }
 
-std::uint64_t GeneratorParameters::integer(std::string_view name) const {
+std::uint64_t ParameterSet::integer(std::string_view name) const {
   const auto& [spec, value] = find(name);
   if (spec.kind != ParameterKind::Integer || value.x() < 0.0)
     throw std::logic_error("parameter '" + std::string(name) + "' is not a non-negative integer");
   return static_cast<std::uint64_t>(value.x());
 }
 
-ccd::Vec3 GeneratorParameters::vector(std::string_view name) const {
+Vec3 ParameterSet::vector(std::string_view name) const {
   const auto& [spec, value] = find(name);
   if (spec.kind != ParameterKind::Vector) throw std::logic_error("parameter '" + std::string(name) + "' is a scalar");
   return value;
 }
 
-void require_not_greater(const GeneratorParameters& params, std::string_view lo, std::string_view hi) {
+void require_not_greater(const ParameterSet& params, std::string_view lo, std::string_view hi) {
   const double a = params.number(lo);
   const double b = params.number(hi);
   if (a > b)
@@ -171,7 +200,7 @@ void require_not_greater(const GeneratorParameters& params, std::string_view lo,
                                 format_number(b) + ")");
 }
 
-nlohmann::json GeneratorParameters::to_json() const {
+nlohmann::json ParameterSet::to_json() const {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [spec, value] : values_) {
     const std::string key(spec.name);
@@ -185,4 +214,4 @@ nlohmann::json GeneratorParameters::to_json() const {
   return j;
 }
 
-}  // namespace ccdlab
+}  // namespace ccd
