@@ -6,7 +6,9 @@
 #include "runner.hpp"
 
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
+#include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
 
 #include <algorithm>
@@ -68,6 +70,27 @@ std::string job_label(const std::string& method, double dt) {
 
 }  // namespace
 
+bool check_stored_truth(const ccd::TruthFile& truth, const ccd::Scene& scene, const std::string& file) {
+  if (truth.version >= 2) {
+    const std::string digest = ccd::scene_digest(scene);
+    if (truth.scene_sha256 != digest)
+      throw ccd::InputError(file, "scene_sha256",
+                            "this is the ground truth of another scene (" + truth.scene_sha256.substr(0, 12) +
+                                "..., the experiment's scene is " + digest.substr(0, 12) +
+                                "...); compute it with `ccdlab truth SCENE.json -o FILE`");
+  }
+  if (truth.horizon != scene.horizon)
+    throw ccd::InputError(file, "horizon",
+                          "is " + ccd::format_number(truth.horizon) + ", the experiment's scene runs to " +
+                              ccd::format_number(scene.horizon));
+  for (std::size_t i = 0; i < truth.events.size(); ++i)
+    if (truth.events[i].b >= scene.bodies.size())
+      throw ccd::InputError(file, "events[" + std::to_string(i) + "].b",
+                            "body " + std::to_string(truth.events[i].b) + " does not exist (the scene has " +
+                                std::to_string(scene.bodies.size()) + " bodies)");
+  return truth.version >= 2;
+}
+
 json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options) {
   struct Job {
     std::size_t index;
@@ -84,12 +107,13 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
 
   Progress progress(jobs.size(), options.quiet);
   progress.phase("scene: " + std::to_string(scene.bodies.size()) + " bodies, horizon " +
-                 std::to_string(scene.horizon) + " s; computing exact ground truth");
+                 std::to_string(scene.horizon) + " s; " +
+                 (options.truth ? "ground truth from " + options.truth_file : std::string("computing exact ground truth")));
   const auto t0 = std::chrono::steady_clock::now();
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
   topts.threads = options.threads;
-  const TruthIndex truth(ccd::compute_truth(traj, topts));
+  const TruthIndex truth(options.truth ? options.truth->events : ccd::compute_truth(traj, topts));
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -135,7 +159,9 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   out["truth"] = {{"events", truth.events().size()},
                   {"tangent_events", tangent},
                   {"pairs", pairs.size()},
-                  {"seconds", truth_seconds}};
+                  {"seconds", truth_seconds},
+                  {"source", options.truth ? options.truth_file : std::string("computed")},
+                  {"scene_sha256", ccd::scene_digest(scene)}};
   out["environment"] = environment_json(options.threads);
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();

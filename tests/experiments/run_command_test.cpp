@@ -149,3 +149,57 @@ TEST_CASE("Ctrl-C leaves no results file and exits with 130", "[run][cli]") {
   CHECK_FALSE(fs::exists(out));
   for (const auto& f : fs::directory_iterator(dir.path)) CHECK(f.path().filename().string().find(".tmp.") == std::string::npos);
 }
+
+TEST_CASE("ccdlab run --truth reuses a stored truth of the same scene only", "[run][cli][truth]") {
+  const TempDir dir;
+  const std::string scene = (dir.path / "scene.json").string();
+  REQUIRE(ccdlab("scene gas bodies=150 seed=3 horizon=0.5 -o " + scene) == 0);
+  json e = small_experiment();
+  e["scene"] = scene;
+  const std::string exp = dir.write("e.json", e);
+  const std::string truth = (dir.path / "truth.json").string();
+  REQUIRE(ccdlab("truth " + scene + " --quiet -o " + truth) == 0);
+  const std::string computed = (dir.path / "computed.json").string(), reused = (dir.path / "reused.json").string();
+  REQUIRE(ccdlab("run " + exp + " --quiet --threads 1 -o " + computed) == 0);
+  std::string err;
+  SECTION("the same scene: the same counts, the source recorded") {
+    REQUIRE(ccdlab("run " + exp + " --quiet --threads 1 --truth " + truth + " -o " + reused, &err, &dir) == 0);
+    const json a = read(computed), b = read(reused);
+    CHECK(a["truth"]["source"] == "computed");
+    CHECK(b["truth"]["source"] == truth);
+    CHECK(a["truth"]["scene_sha256"] == b["truth"]["scene_sha256"]);
+    CHECK(a["truth"]["events"] == b["truth"]["events"]);
+    REQUIRE(a["records"].size() == b["records"].size());
+    for (std::size_t i = 0; i < a["records"].size(); ++i)
+      for (const char* k : {"events", "detected", "missed", "confirmed", "false_positives", "max_penetration"})
+        CHECK(a["records"][i][k] == b["records"][i][k]);
+  }
+  SECTION("another scene's truth: exit 2 naming the file, nothing written") {
+    const std::string other = (dir.path / "other.json").string(), other_truth = (dir.path / "other-truth.json").string();
+    REQUIRE(ccdlab("scene gas bodies=150 seed=4 horizon=0.5 -o " + other) == 0);
+    REQUIRE(ccdlab("truth " + other + " --quiet -o " + other_truth) == 0);
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + other_truth + " -o " + reused, &err, &dir) == 2);
+    CHECK(err.find(other_truth + ": scene_sha256: this is the ground truth of another scene") != std::string::npos);
+    CHECK_FALSE(fs::exists(reused));
+  }
+  SECTION("a version 1 file is read; its horizon is checked") {
+    json v1 = read(truth);
+    v1["format"] = "ccdlab-truth/1";
+    v1.erase("scene_sha256");
+    const std::string v1_path = dir.write("v1.json", v1);
+    REQUIRE(ccdlab("run " + exp + " --threads 1 --truth " + v1_path + " -o " + reused, &err, &dir) == 0);
+    CHECK(err.find("no scene digest") != std::string::npos);
+    CHECK(read(reused)["truth"]["events"] == read(computed)["truth"]["events"]);
+    v1["horizon"] = 0.75;  // still holds every event, but is not the scene's horizon
+    const std::string short_path = dir.write("short.json", v1);
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + short_path + " -o " + (dir.path / "x.json").string(), &err,
+                 &dir) == 2);
+    CHECK(err.find(short_path + ": horizon") != std::string::npos);
+  }
+  SECTION("a missing or malformed truth file: exit 2 naming it") {
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + (dir.path / "none.json").string() + " -o " + reused, &err,
+                 &dir) == 2);
+    CHECK(err.find("none.json") != std::string::npos);
+    CHECK_FALSE(fs::exists(reused));
+  }
+}
