@@ -1,6 +1,6 @@
 #include <ccd/truth/pair_contact.hpp>
 
-#include <ccd/queries/sphere_sphere_contact.hpp>
+#include <ccd/truth/contact_function.hpp>
 
 #include <algorithm>
 #include <cassert>
@@ -8,10 +8,6 @@
 
 namespace ccd {
 namespace {
-
-MovingSphere sphere_at(const Piece& q, double t, double radius) {
-  return {q.position(t), q.velocity(t), q.a, radius};
-}
 
 // Calls visit(enter, exit) for every contact interval of the pair on each common piece
 // that overlaps [u0, u1], in time order, clipped to [u0, u1]. visit returns false to stop.
@@ -29,6 +25,8 @@ void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uin
   std::size_t ia = first_ending_after(pa);
   std::size_t ib = first_ending_after(pb);
   const double ra = traj.radius(a), rb = traj.radius(b);
+  const auto la = traj.lows(a);
+  const auto lb = traj.lows(b);
   while (ia < pa.size() && ib < pb.size()) {
     const Piece& qa = pa[ia];
     const Piece& qb = pb[ib];
@@ -36,17 +34,12 @@ void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uin
     const double c1 = std::min(qa.t1, qb.t1);
     if (c0 > u1) return;
     if (c1 >= c0 && c1 >= u0) {
-      const SublevelSet set =
-          sphere_sphere_contact_intervals(sphere_at(qa, c0, ra), sphere_at(qb, c0, rb), c1 - c0);
-      const double S = c1 - c0;
+      const PairMotion motion(qa, la[ia], ra, qb, lb[ib], rb);
+      const SublevelSet set = motion.certainly_apart(c0, c1) ? SublevelSet{} : motion.contact_set(c0, c1);
       for (int k = 0; k < set.count; ++k) {
         const RootInterval& iv = set.intervals[k];
-        double enter = iv.lo <= 0.0 ? c0 : std::min(c0 + iv.lo, c1);
-        double exit = iv.hi >= S ? c1 : std::min(c0 + iv.hi, c1);
-        if (exit < u0 || enter > u1) continue;
-        enter = std::max(enter, u0);
-        exit = std::min(exit, u1);
-        if (!visit(enter, exit)) return;
+        if (iv.hi < u0 || iv.lo > u1) continue;
+        if (!visit(std::max(iv.lo, u0), std::min(iv.hi, u1))) return;
       }
     }
     if (qa.t1 < qb.t1) {

@@ -1,0 +1,72 @@
+#pragma once
+// The contact function of two bodies on a common piece of their trajectories, evaluated
+// in double-double with a certified error bound: the one definition of "touching" shared
+// by the ground truth, the runner's sample test and the benchmarks.
+//
+// f(t) = |c_b(t) - c_a(t)|^2 - (r_a + r_b)^2 (units: length^2; contact is f <= 0,
+// closed). Positions come from the exact double-double piece states
+// (ccd/motion/trajectory.hpp), the offset t - t0 is formed exactly, and r_a + r_b is
+// formed exactly, so the only rounding is that of the double-double operations
+// themselves (bounded below) plus the model's own error near an inexact reflection
+// time (PieceLow::edge_error). docs/truth.md derives the bound:
+//   e_x   = 32 u^2 (|p| + |v| |s| + |a| s^2 / 2) per coordinate and body, u = 2^-53,
+//   e_d   = sqrt(3) (e_x,a + e_x,b) + 4 u^2 |d| + edge errors       (error of d = c_b - c_a)
+//   error = 2 |d| e_d + e_d^2 + 16 u^2 (|d|^2 + R^2) + 4 u^2 |f|   (error of f)
+// The band therefore scales with the squared unit roundoff and the data's magnitudes,
+// about 1e-32 relative, not with the motion's length over the radius.
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/queries/polynomial_roots.hpp>
+
+#include <cstdint>
+
+namespace ccd {
+
+/// f(t) rounded to double and a bound on |f - f_exact| (both length^2).
+struct ContactValue {
+  double f = 0.0;
+  double error = 0.0;
+};
+
+/// Two pieces (one per body) evaluated together.
+class PairMotion {
+ public:
+  PairMotion(const Piece& qa, const PieceLow& la, double ra, const Piece& qb, const PieceLow& lb, double rb);
+  /// f(t) and its certified error.
+  ContactValue value(double t) const;
+  /// f'(t) = 2 d . d' (double-double evaluation, rounded).
+  double slope(double t) const;
+  /// An upper bound of |f''(t)| = 2 |d'|^2 + 2 d . (a_b - a_a) (double evaluation, padded).
+  double curvature_bound(double t) const;
+  /// Every maximal interval of [c0, c1] (both pieces defined there) on which the bodies
+  /// touch, times absolute. Critical points of f are located on the double-precision
+  /// polynomial and polished on the sign of the double-double f' to adjacent doubles;
+  /// f is then monotone between them. With B the largest error bound at those points
+  /// (plus |f''| (2 ulp)^2 at interior critical points, the time quantisation), a point
+  /// is out of contact when f > B; a local minimum with |f| <= B whose neighbours are out
+  /// is a tangency [t, t] (endpoints of the piece included); otherwise in contact.
+  /// Interval ends are the last doubles with f <= B.
+  SublevelSet contact_set(double c0, double c1) const;
+  /// A cheap double-precision filter: true only when f > 0 on all of [c0, c1] with a wide
+  /// margin (128 eps (M + R)(M + R + P), M the relative motion's extent, P the largest
+  /// coordinate magnitude), so that contact_set would return nothing. False means "solve".
+  bool certainly_apart(double c0, double c1) const;
+  /// Relative acceleration exactly zero: f is a quadratic in t.
+  bool shared_acceleration() const { return shared_acceleration_; }
+
+ private:
+  const Piece* qa_;
+  const Piece* qb_;
+  const PieceLow* la_;
+  const PieceLow* lb_;
+  Dd radius_sum_;
+  bool shared_acceleration_;
+};
+
+/// Whether bodies a and b are in contact at time t (f(t) <= its error bound): the sample
+/// test of discrete methods. A double-precision evaluation decides when it is certain
+/// (|f| beyond 64 eps (|d| + R)(|d| + R + P)); otherwise the double-double one does.
+bool in_contact(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double t);
+/// The same, with the pieces that contain t already known (indices into pieces(a), pieces(b)).
+bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b, std::size_t ib, double t);
+
+}  // namespace ccd
