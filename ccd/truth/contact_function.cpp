@@ -61,46 +61,63 @@ double PairMotion::curvature_bound(double t) const {
   return 2.0 * (dv.squaredNorm() + d.norm() * da.norm()) * (1.0 + 1e-6) + 1e-300;
 }
 
+namespace {
+
+// The sign change of a monotone predicate on [a, b] (in(a) == in_a, in(b) != in_a),
+// narrowed to two adjacent doubles by stepping out from `guess` in doubling ulps and
+// then bisecting: a handful of evaluations when the guess is good. Returns the endpoint
+// of the final bracket on the side where in() is true.
+template <class In>
+double polish_sign_change(In&& in, double a, double b, bool in_a, double guess) {
+  double lo = a, hi = b;  // lo keeps a's state, hi b's
+  double x = (guess > a && guess < b) ? guess : 0.5 * (a + b);
+  if (x > lo && x < hi) {
+    if (in(x) == in_a) {
+      lo = x;
+      for (double step = std::nextafter(x, kInfinity) - x;; step *= 2.0) {
+        const double y = lo + step;
+        if (!(y < hi)) break;
+        if (in(y) != in_a) { hi = y; break; }
+        lo = y;
+      }
+    } else {
+      hi = x;
+      for (double step = x - std::nextafter(x, -kInfinity);; step *= 2.0) {
+        const double y = hi - step;
+        if (!(y > lo)) break;
+        if (in(y) == in_a) { lo = y; break; }
+        hi = y;
+      }
+    }
+  }
+  while (true) {
+    const double m = lo + 0.5 * (hi - lo);
+    if (!(m > lo && m < hi)) break;
+    if (in(m) == in_a) lo = m; else hi = m;
+  }
+  return in_a ? lo : hi;
+}
+
+}  // namespace
+
 SublevelSet PairMotion::contact_set(double c0, double c1) const {
   if (!(c1 >= c0)) return {};
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-  // Split points of f' (roots of f'', approximately), then the sign changes of f'.
-  std::array<double, 4> fs{c0, c1, 0.0, 0.0};
-  int nfs = 2;
-  if (!shared_acceleration_ && c1 > c0) {
-    const Vec3 D0 = qb_->position(c0) - qa_->position(c0);
-    const Vec3 Dv = qb_->velocity(c0) - qa_->velocity(c0);
-    const Vec3 Da = qb_->a - qa_->a;
-    double r0 = 0.0, r1 = 0.0;
-    const int k = gsl_poly_solve_quadratic(1.5 * Da.squaredNorm(), 3.0 * Dv.dot(Da), Dv.squaredNorm() + D0.dot(Da),
-                                           &r0, &r1);
-    for (const double r : {r0, r1}) {
-      if (k == 0 || (k == 1 && r == r1 && r0 != r1)) continue;
-      const double t = c0 + r;
-      if (t > fs[0] && t < c1) fs[nfs++] = t;
-    }
-    for (int i = 1; i < nfs; ++i)  // insertion sort of at most 4 values
-      for (int j = i; j > 0 && fs[j - 1] > fs[j]; --j) std::swap(fs[j - 1], fs[j]);
-  }
-  auto slope_and_curvature = [this](double x, double* df) {
-    const Vec3 dv = qb_->velocity(x) - qa_->velocity(x);
-    const Vec3 d = qb_->position(x) - qa_->position(x);
-    *df = 2.0 * (dv.squaredNorm() + d.dot(qb_->a - qa_->a));
-    return slope(x);
-  };
+  const DoubleSplit ds = double_split(c0, c1);
+  if (ds.apart) return {};
+  // Critical points: the double estimates, polished on the sign of the double-double f'.
   MonotoneSplit s;
+  std::array<bool, MonotoneSplit::capacity> critical{};
   s.x[0] = c0;
   s.count = 1;
-  std::array<bool, MonotoneSplit::capacity> critical{};
-  for (int i = 0; i + 1 < nfs; ++i) {
-    const double a = fs[i], b = fs[i + 1];
-    if (!(b > a)) continue;
-    const double sa = slope(a), sb = slope(b);
-    double x = kNaN;
-    if (i > 0 && sa == 0.0) x = a;
-    else if ((sa < 0.0 && sb > 0.0) || (sa > 0.0 && sb < 0.0))
-      x = refine_sign_change(slope_and_curvature, a, b, sa <= 0.0, kNaN);
-    if (x > s.x[s.count - 1] && x < c1 && s.count + 1 < MonotoneSplit::capacity) {
+  const int n = ds.split.count;
+  for (int i = 1; i + 1 < n; ++i) {
+    const double lo = c0 + 0.5 * (ds.split.x[i - 1] + ds.split.x[i]);
+    const double hi = c0 + 0.5 * (ds.split.x[i] + ds.split.x[i + 1]);
+    double x = c0 + ds.split.x[i];
+    const double sl = slope(lo), sh = slope(hi);
+    if (lo < hi && ((sl <= 0.0) != (sh <= 0.0)))
+      x = polish_sign_change([this](double y) { return slope(y) <= 0.0; }, lo, hi, sl <= 0.0, x);
+    if (x > s.x[s.count - 1] && x < c1) {
       critical[s.count] = true;
       s.x[s.count++] = x;
     }
@@ -132,9 +149,18 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
       st[i] = In;
     }
   }
-  auto g = [this, band](double x, double* df) {
-    *df = slope(x);
-    return value(x).f - band;
+  // A boundary between an in and an out breakpoint: the double-precision root as the
+  // guess, polished on the double-double predicate f <= band.
+  auto boundary = [&](int i, bool in_left) {
+    auto f_double = [&](double t, double* df) {
+      const double u = t - c0;
+      const Vec3 d = ds.D0 + ds.Dv * u + ds.Da * (0.5 * u * u);
+      *df = 2.0 * d.dot(ds.Dv + ds.Da * u);
+      return d.squaredNorm() - ds.R * ds.R;
+    };
+    const double guess =
+        refine_sign_change(f_double, s.x[i], s.x[i + 1], in_left, std::numeric_limits<double>::quiet_NaN());
+    return polish_sign_change([&](double y) { return value(y).f <= band; }, s.x[i], s.x[i + 1], in_left, guess);
   };
   SublevelSet out;
   auto emit = [&out](double lo, double hi) {
@@ -151,46 +177,54 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
     if (i == m) break;
     const bool in_i = st[i] == In, in_j = st[i + 1] == In;
     if (in_i && !in_j) {
-      emit(start, refine_sign_change(g, s.x[i], s.x[i + 1], true, kNaN));
+      emit(start, boundary(i, true));
       open = false;
     } else if (!in_i && in_j) {
       open = true;
-      start = refine_sign_change(g, s.x[i], s.x[i + 1], false, kNaN);
+      start = boundary(i, false);
     }
   }
   if (open) emit(start, s.x[m]);
   return out;
 }
 
-bool PairMotion::certainly_apart(double c0, double c1) const {
+PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {
+  DoubleSplit r;
   const double S = c1 - c0;
-  const Vec3 D0 = qb_->position(c0) - qa_->position(c0);
-  const Vec3 Dv = qb_->velocity(c0) - qa_->velocity(c0);
-  const Vec3 Da = qb_->a - qa_->a;
-  const double R = radius_sum_.value();
-  auto f_at = [&](double s) { return (D0 + Dv * s + Da * (0.5 * s * s)).squaredNorm() - R * R; };
-  double fmin;
-  if (Da.isZero(0.0)) {
+  r.D0 = qb_->position(c0) - qa_->position(c0);
+  r.Dv = qb_->velocity(c0) - qa_->velocity(c0);
+  r.Da = qb_->a - qa_->a;
+  r.R = radius_sum_.value();
+  const Vec3 D0 = r.D0, Dv = r.Dv, Da = r.Da;
+  const double R = r.R;
+  auto f_at = [&](double u) { return (D0 + Dv * u + Da * (0.5 * u * u)).squaredNorm() - R * R; };
+  Polynomial p;
+  p.c[4] = 0.25 * Da.squaredNorm();
+  p.c[3] = Dv.dot(Da);
+  p.c[2] = Dv.squaredNorm() + D0.dot(Da);
+  p.c[1] = 2.0 * D0.dot(Dv);
+  p.c[0] = D0.squaredNorm() - R * R;
+  if (Da.isZero(0.0)) {  // quadratic: one critical point in closed form
     const double A = Dv.squaredNorm();
-    const double s_star = A > 0.0 ? std::clamp(-D0.dot(Dv) / A, 0.0, S) : 0.0;
-    fmin = std::min({f_at(0.0), f_at(S), f_at(s_star)});
+    r.split.x[0] = 0.0;
+    r.split.count = 1;
+    const double u = A > 0.0 ? -D0.dot(Dv) / A : 0.0;
+    if (u > 0.0 && u < S) r.split.x[r.split.count++] = u;
+    if (S > 0.0) r.split.x[r.split.count++] = S;
   } else {
-    Polynomial p;
-    p.c[4] = 0.25 * Da.squaredNorm();
-    p.c[3] = Dv.dot(Da);
-    p.c[2] = Dv.squaredNorm() + D0.dot(Da);
-    p.c[1] = 2.0 * D0.dot(Dv);
-    p.c[0] = D0.squaredNorm() - R * R;
-    const MonotoneSplit sp = monotone_split(p, 0.0, S);
-    fmin = f_at(0.0);
-    for (int i = 0; i < sp.count; ++i) fmin = std::min(fmin, f_at(sp.x[i]));
+    r.split = monotone_split(p, 0.0, S);
   }
+  double fmin = f_at(0.0);
+  for (int i = 0; i < r.split.count; ++i) fmin = std::min(fmin, f_at(r.split.x[i]));
   const double M = D0.norm() + Dv.norm() * S + 0.5 * Da.norm() * S * S;
   const double P = std::max(magnitude(*qa_, c1), magnitude(*qb_, c1));
   const double edge = la_->edge_error + lb_->edge_error;
   const double band = 128.0 * kEps * (M + R) * (M + R + P) + 4.0 * (M + R) * edge;
-  return fmin > band;
+  r.apart = fmin > band;
+  return r;
 }
+
+bool PairMotion::certainly_apart(double c0, double c1) const { return double_split(c0, c1).apart; }
 
 bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b, std::size_t ib, double t) {
   const Piece& qa = traj.pieces(a)[ia];

@@ -38,8 +38,9 @@ class PairMotion {
   /// An upper bound of |f''(t)| = 2 |d'|^2 + 2 d . (a_b - a_a) (double evaluation, padded).
   double curvature_bound(double t) const;
   /// Every maximal interval of [c0, c1] (both pieces defined there) on which the bodies
-  /// touch, times absolute. Critical points of f are located on the double-precision
-  /// polynomial and polished on the sign of the double-double f' to adjacent doubles;
+  /// touch, times absolute; empty at once when certainly_apart. Critical points of f are
+  /// located on the double-precision polynomial and polished on the sign of the
+  /// double-double f' to adjacent doubles;
   /// f is then monotone between them. With B the largest error bound at those points
   /// (plus |f''| (2 ulp)^2 at interior critical points, the time quantisation), a point
   /// is out of contact when f > B; a local minimum with |f| <= B whose neighbours are out
@@ -54,6 +55,16 @@ class PairMotion {
   bool shared_acceleration() const { return shared_acceleration_; }
 
  private:
+  /// The double-precision relative motion at c0, its approximate monotone split (times
+  /// relative to c0) and the filter's verdict.
+  struct DoubleSplit {
+    Vec3 D0, Dv, Da;
+    double R = 0.0;
+    MonotoneSplit split;
+    bool apart = false;
+  };
+  DoubleSplit double_split(double c0, double c1) const;
+
   const Piece* qa_;
   const Piece* qb_;
   const PieceLow* la_;

@@ -35,7 +35,7 @@ void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uin
     if (c0 > u1) return;
     if (c1 >= c0 && c1 >= u0) {
       const PairMotion motion(qa, la[ia], ra, qb, lb[ib], rb);
-      const SublevelSet set = motion.certainly_apart(c0, c1) ? SublevelSet{} : motion.contact_set(c0, c1);
+      const SublevelSet set = motion.contact_set(c0, c1);
       for (int k = 0; k < set.count; ++k) {
         const RootInterval& iv = set.intervals[k];
         if (iv.hi < u0 || iv.lo > u1) continue;
