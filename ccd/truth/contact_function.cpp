@@ -123,27 +123,27 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
     }
   }
   if (c1 > c0) s.x[s.count++] = c1;
-  // Values and the band.
-  double band = 0.0;
+  // Values and their bands.
+  std::array<double, MonotoneSplit::capacity> band{};
   for (int i = 0; i < s.count; ++i) {
     const ContactValue v = value(s.x[i]);
     s.v[i] = v.f;
-    double b = v.error;
+    band[i] = v.error;
     if (critical[i]) {
       const double ulp2 = 2.0 * (std::nextafter(std::fabs(s.x[i]), kInfinity) - std::fabs(s.x[i]));
-      b += curvature_bound(s.x[i]) * ulp2 * ulp2;
+      band[i] += curvature_bound(s.x[i]) * ulp2 * ulp2;
     }
-    band = std::max(band, b);
   }
   enum State { Out, In, Touch };
   std::array<State, MonotoneSplit::capacity> st{};
   const int m = s.count - 1;
+  auto out_at = [&](int j) { return s.v[j] > band[j]; };
   for (int i = 0; i <= m; ++i) {
     const double v = s.v[i];
     const bool local_min = (i == 0 || s.v[i - 1] >= v) && (i == m || s.v[i + 1] >= v);
-    if (v > band) {
+    if (out_at(i)) {
       st[i] = Out;
-    } else if (local_min && v >= -band && (i == 0 || s.v[i - 1] > band) && (i == m || s.v[i + 1] > band)) {
+    } else if (local_min && v >= -band[i] && (i == 0 || out_at(i - 1)) && (i == m || out_at(i + 1))) {
       st[i] = Touch;
     } else {
       st[i] = In;
@@ -160,7 +160,12 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
     };
     const double guess =
         refine_sign_change(f_double, s.x[i], s.x[i + 1], in_left, std::numeric_limits<double>::quiet_NaN());
-    return polish_sign_change([&](double y) { return value(y).f <= band; }, s.x[i], s.x[i + 1], in_left, guess);
+    return polish_sign_change(
+        [&](double y) {
+          const ContactValue v = value(y);
+          return v.f <= v.error;
+        },
+        s.x[i], s.x[i + 1], in_left, guess);
   };
   SublevelSet out;
   auto emit = [&out](double lo, double hi) {

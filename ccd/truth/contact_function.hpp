@@ -41,11 +41,11 @@ class PairMotion {
   /// touch, times absolute; empty at once when certainly_apart. Critical points of f are
   /// located on the double-precision polynomial and polished on the sign of the
   /// double-double f' to adjacent doubles;
-  /// f is then monotone between them. With B the largest error bound at those points
-  /// (plus |f''| (2 ulp)^2 at interior critical points, the time quantisation), a point
-  /// is out of contact when f > B; a local minimum with |f| <= B whose neighbours are out
-  /// is a tangency [t, t] (endpoints of the piece included); otherwise in contact.
-  /// Interval ends are the last doubles with f <= B.
+  /// f is then monotone between them. With B the error bound at such a point (plus
+  /// |f''| (2 ulp)^2 at an interior critical point: the time quantisation), the point is
+  /// out of contact when f > B; a local minimum with |f| <= B whose neighbouring points
+  /// are out is a tangency [t, t] (endpoints of the piece included); otherwise in
+  /// contact. Interval ends are the last doubles with f <= its error bound (in_contact).
   SublevelSet contact_set(double c0, double c1) const;
   /// A cheap double-precision filter: true only when f > 0 on all of [c0, c1] with a wide
   /// margin (128 eps (M + R)(M + R + P), M the relative motion's extent, P the largest
