@@ -167,9 +167,13 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
         // Discrete: detected at the first sample inside the event.
         if (continuous && ev.enter < t0 - slack) continue;
         if (std::isnan(c.lag[e])) {
-          const ccd::Vec3 d = continuous ? ccd::Vec3(traj.position(p.a, when) - traj.position(p.b, when))
+          // A continuous method confirms the pair from its first contact in the step on;
+          // an event that starts later in the same step (the pair was already touching
+          // at the step's start from an earlier event) is detected at its own start.
+          const double at = continuous ? std::max(when, ev.enter) : when;
+          const ccd::Vec3 d = continuous ? ccd::Vec3(traj.position(p.a, at) - traj.position(p.b, at))
                                          : ccd::Vec3(states[p.a].position - states[p.b].position);
-          c.lag[e] = std::max(0.0, when - ev.enter);
+          c.lag[e] = std::max(0.0, at - ev.enter);
           c.penetration[e] = std::max(0.0, R - d.norm());
         }
       }

@@ -158,8 +158,21 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
       *df = 2.0 * d.dot(ds.Dv + ds.Da * u);
       return d.squaredNorm() - ds.R * ds.R;
     };
-    const double guess =
-        refine_sign_change(f_double, s.x[i], s.x[i + 1], in_left, std::numeric_limits<double>::quiet_NaN());
+    double guess = std::numeric_limits<double>::quiet_NaN();
+    if (ds.Da.isZero(0.0)) {
+      // f = A u^2 + 2 B u + C: the stable roots q / A and C / q (ccd-math notes, section 2).
+      const double A = ds.Dv.squaredNorm(), B = ds.D0.dot(ds.Dv), C = ds.D0.squaredNorm() - ds.R * ds.R;
+      const double disc = B * B - A * C;
+      if (A > 0.0 && disc >= 0.0) {
+        const double q = -(B + std::copysign(std::sqrt(disc), B));
+        // Entering (f decreasing: left of the vertex) is the smaller root.
+        const double r0 = q != 0.0 ? std::min(q / A, C / q) : -B / A;
+        const double r1 = q != 0.0 ? std::max(q / A, C / q) : -B / A;
+        guess = c0 + (in_left ? r1 : r0);
+      }
+    } else {
+      guess = refine_sign_change(f_double, s.x[i], s.x[i + 1], in_left, guess);
+    }
     return polish_sign_change(
         [&](double y) {
           const ContactValue v = value(y);
@@ -231,7 +244,8 @@ PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {
 
 bool PairMotion::certainly_apart(double c0, double c1) const { return double_split(c0, c1).apart; }
 
-bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b, std::size_t ib, double t) {
+ContactCertainty certain_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b,
+                                 std::size_t ib, double t) {
   const Piece& qa = traj.pieces(a)[ia];
   const Piece& qb = traj.pieces(b)[ib];
   const double R = traj.radius(a) + traj.radius(b);
@@ -241,9 +255,19 @@ bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::
   const double P = std::max(magnitude(qa, t), magnitude(qb, t));
   const double edge = traj.lows(a)[ia].edge_error + traj.lows(b)[ib].edge_error;
   const double band = 64.0 * kEps * (dn + R) * (dn + R + P) + 4.0 * (dn + R) * edge;
-  if (f > band) return false;
-  if (f < -band) return true;
-  const PairMotion m(qa, traj.lows(a)[ia], traj.radius(a), qb, traj.lows(b)[ib], traj.radius(b));
+  if (f > band) return ContactCertainty::Apart;
+  if (f < -band) return ContactCertainty::Contact;
+  return ContactCertainty::Unsure;
+}
+
+bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b, std::size_t ib, double t) {
+  switch (certain_contact(traj, a, ia, b, ib, t)) {
+    case ContactCertainty::Apart: return false;
+    case ContactCertainty::Contact: return true;
+    case ContactCertainty::Unsure: break;
+  }
+  const PairMotion m(traj.pieces(a)[ia], traj.lows(a)[ia], traj.radius(a), traj.pieces(b)[ib], traj.lows(b)[ib],
+                     traj.radius(b));
   const ContactValue v = m.value(t);
   return v.f <= v.error;
 }
