@@ -16,7 +16,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Error bound of one body's double-double position at t (per coordinate, metres).
 double position_error(const Piece& q, const PieceLow& low, double t) {
-  double e = 32.0 * kU2 * piece_magnitude(q, t) * (1.0 + 1e-5);
+  double e = 32.0 * kU2 * piece_magnitude(q, t) * (1.0 + 1e-5) + low.start_error +
+             low.velocity_error * std::fabs(t - q.t0) * (1.0 + 1e-5);
   if (low.edge_error > 0.0 && (t - q.t0 <= low.edge_window || q.t1 - t <= low.edge_window)) e += low.edge_error;
   return e;
 }
@@ -236,7 +237,8 @@ PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {
   for (int i = 0; i < r.split.count; ++i) fmin = std::min(fmin, f_at(r.split.x[i]));
   const double M = D0.norm() + Dv.norm() * S + 0.5 * Da.norm() * S * S;
   const double P = std::max(piece_magnitude(*qa_, c1), piece_magnitude(*qb_, c1));
-  const double edge = la_->edge_error + lb_->edge_error;
+  const double edge = la_->edge_error + lb_->edge_error + la_->start_error + lb_->start_error +
+                      (la_->velocity_error + lb_->velocity_error) * (c1 - std::min(qa_->t0, qb_->t0));
   const double band = 128.0 * kEps * (M + R) * (M + R + P) + 4.0 * (M + R) * edge;
   r.apart = fmin > band;
   return r;
