@@ -20,6 +20,7 @@
 #include "support/peer_protocol.hpp"
 
 #include <ccd/broad_phase/registry.hpp>
+#include <ccd/util/integer_text.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -96,13 +97,12 @@ int main(int argc, char** argv) {
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
-      sizes.clear();
-      for (const char* p = argv[i] + 8; *p;) {
-        char* end = nullptr;
-        sizes.push_back(std::strtoull(p, &end, 10));
-        p = (*end == ',') ? end + 1 : end;
-        if (end == p && *p) break;
+      const auto list = ccd::parse_integer_list(argv[i] + 8, 1, 100000000);
+      if (!list) {
+        std::fprintf(stderr, "broad_phase_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=1000,10000\n");
+        return 2;
       }
+      sizes.assign(list->begin(), list->end());
     } else if (std::strcmp(argv[i], "--slow") == 0) {
       slow = true;
     } else {

@@ -8,9 +8,12 @@
 //
 //   grid_threads_bench [--sizes=100000,1000000] [benchmark flags]
 #include <ccd/broad_phase/grid.hpp>
+#include <ccd/util/integer_text.hpp>
 #include <benchmarks/support/peer_scene.hpp>
 
 #include <benchmark/benchmark.h>
+
+#include <cstdio>
 
 #include <algorithm>
 #include <chrono>
@@ -70,13 +73,12 @@ int main(int argc, char** argv) {
   std::vector<char*> rest;
   for (int i = 0; i < argc; ++i) {
     if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
-      sizes.clear();
-      std::string s = argv[i] + 8;
-      for (std::size_t p = 0; p < s.size();) {
-        const std::size_t q = std::min(s.find(',', p), s.size());
-        sizes.push_back(std::stoull(s.substr(p, q - p)));
-        p = q + 1;
+      const auto list = ccd::parse_integer_list(argv[i] + 8, 1, 100000000);
+      if (!list) {
+        std::fprintf(stderr, "grid_threads_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=100000\n");
+        return 2;
       }
+      sizes.assign(list->begin(), list->end());
     } else {
       rest.push_back(argv[i]);
     }

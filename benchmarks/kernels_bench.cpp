@@ -12,8 +12,8 @@
 // swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's
 // pair test + the exact first contact on the survivors; the discrete one is the `aabb`
 // bound at the step's start + `grid` + the bound's test + the narrow phase's sample test
-// (ccd::spheres_touch). Counters: candidates (broad-phase pairs), passed (after the
-// bound's test), confirmed (contacts).
+// (ccd::in_contact, the ground truth's definition of touching). Counters: candidates
+// (broad-phase pairs), passed (after the bound's test), confirmed (contacts).
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
@@ -73,7 +73,7 @@ void time_contact_query(benchmark::State& state, Query query) {
 void sphere_contact_linear(benchmark::State& state) {
   time_contact_query(state, [](const ccd::MovingSphere& a, const ccd::MovingSphere& b) {
     const ccd::SphereSphereContact c = ccd::sphere_sphere_first_contact(a, b, 1.0);
-    return std::pair{c.status != ccd::ContactStatus::NoContact, c.toi};
+    return std::pair{c.status != ccd::ContactStatus::Miss, c.toi};
   });
 }
 

@@ -8,6 +8,7 @@
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
+#include <ccd/util/parallel_for.hpp>
 #include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
 
@@ -18,7 +19,6 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 namespace ccdlab {
 
@@ -133,19 +133,14 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.cancel = options.cancel;
 
   std::vector<RunRecord> records(jobs.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < jobs.size();) {
-      if (options.cancel && options.cancel->load()) return;
-      records[i] = run_method(in, jobs[i].method, jobs[i].dt);
-      progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {
+    if (options.cancel && options.cancel->load()) {
+      records[i].cancelled = true;
+      return;
     }
-  };
-  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+    records[i] = run_method(in, jobs[i].method, jobs[i].dt);
+    progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  });
   progress.finish();
   if (options.cancel && options.cancel->load()) return json();
   for (const RunRecord& r : records)

@@ -30,6 +30,7 @@
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/util/integer_text.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -220,14 +221,6 @@ const char* status_name(int s) {
   }
 }
 
-std::vector<std::size_t> parse_sizes(const char* s) {
-  std::vector<std::size_t> v;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) v.push_back(std::stoull(item));
-  return v;
-}
-
 bool is_ccdlab(const PeerInfo& p) { return p.library == "ccdlab"; }
 
 }  // namespace
@@ -247,7 +240,12 @@ int main(int argc, char** argv) {
       return nullptr;
     };
     if (const char* v = value("--sizes")) {
-      sizes = parse_sizes(v);
+      const auto list = ccd::parse_integer_list(v, 1, 100000000);
+      if (!list) {
+        std::fprintf(stderr, "peers_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=1000,10000\n");
+        return 2;
+      }
+      sizes.assign(list->begin(), list->end());
     } else if (const char* v = value("--methods")) {
       std::stringstream ss(v);
       std::string item;

@@ -7,6 +7,7 @@
 #include <ccd/motion/trajectory.hpp>
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace ccd {
@@ -16,6 +17,8 @@ class StateCursor {
   explicit StateCursor(const Trajectories& motion) : motion_(motion), cursor_(motion.size(), 0) {}
   /// Writes the state of every body at time t into `out` (resized to the body count).
   void evaluate(double t, std::vector<BodyState>& out);
+  /// Index into pieces(body) of the piece each body was evaluated on at the last time.
+  std::span<const std::size_t> pieces() const { return cursor_; }
 
  private:
   const Trajectories& motion_;

@@ -30,7 +30,8 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
       // Scenes hold spheres only: the one kind pair is looked up once, here.
       narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)) {}
 
-void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times) {
+void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
+                       std::span<const std::size_t> start_piece) {
   StepTimes local;
   Stopwatch watch(times != nullptr);
 
@@ -51,7 +52,7 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
 
   watch.start();
   out.contacts.clear();
-  const NarrowInput in{&motion, ctx.start, ctx.t0, ctx.t1, sample_test()};
+  const NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
   for (const BodyPair& p : out.passed) {
     const ContactResult c = narrow_(in, p.a, p.b);
     if (c.found()) out.contacts.push_back({p, c});

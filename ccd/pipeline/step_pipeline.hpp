@@ -8,7 +8,7 @@
 // A step is [ctx.t0, ctx.t1] (a continuous method: a space-time bound, the narrow phase's
 // first contact over the step) or the sample time ctx.t0 == ctx.t1 (a discrete method:
 // an Instant bound, the narrow phase's sample test at t0). The bound is given ctx as is;
-// the narrow phase gets `motion` for step queries and ctx.start for sample tests.
+// the narrow phase gets `motion` (step queries and sample tests) and ctx.start.
 // Stages and their outputs (StepResult):
 //  1. bound.prepare(ctx) -> one box per body (boxes());
 //  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
@@ -53,8 +53,10 @@ class StepPipeline {
                const NarrowTable& table = narrow_table());
 
   /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
-  /// `*times` when given (no clock is read otherwise).
-  void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr);
+  /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
+  /// body's piece index at t0 (StateCursor::pieces), sparing the sample test a search.
+  void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
+           std::span<const std::size_t> start_piece = {});
 
   bool sample_test() const { return knowledge_ == Knowledge::Instant; }
   const Bound& bound() const { return *bound_; }

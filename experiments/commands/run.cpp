@@ -6,12 +6,13 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
+#include <ccd/util/parallel_for.hpp>
 
 #include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <thread>
 #include <unistd.h>
 
 namespace ccdlab {
@@ -26,16 +27,11 @@ extern "C" void on_signal(int) {
   }
 }
 
+// A flag's integer in [1, 4096] (ccd/util/integer_text.hpp).
 bool parse_int(const std::string& s, int& out) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(s, &used);
-    if (used != s.size() || v < 1 || v > 4096) return false;
-    out = static_cast<int>(v);
-    return true;
-  } catch (...) {
-    return false;
-  }
+  const auto v = ccd::parse_integer(s, 1, 4096);
+  if (v) out = static_cast<int>(*v);
+  return v.has_value();
 }
 
 int run_run(std::span<const std::string> args) {
@@ -45,7 +41,7 @@ int run_run(std::span<const std::string> args) {
   };
   std::string experiment_path, out_path, truth_path;
   RunOptions options;
-  options.threads = std::max(1u, std::thread::hardware_concurrency());
+  options.threads = static_cast<int>(ccd::resolve_threads(0));
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> const std::string* {

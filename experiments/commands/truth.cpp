@@ -8,6 +8,7 @@
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -37,11 +38,6 @@ int usage_error(const std::string& what) {
   return kExitBadInput;
 }
 
-std::optional<unsigned long> parse_count(const std::string& s) {
-  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) return std::nullopt;
-  return std::stoul(s);
-}
-
 int run_truth(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool quiet = false;
@@ -54,8 +50,8 @@ int run_truth(std::span<const std::string> args) {
       if (a == "-o" || a == "--output") {
         out_path = v;
       } else {
-        const auto n = parse_count(v);
-        if (!n || *n == 0) return usage_error(a + " needs a positive integer, got '" + v + "'");
+        const auto n = ccd::parse_integer(v, 1, 999999999);
+        if (!n) return usage_error(a + " needs a positive integer, got '" + v + "'");
         if (a == "--threads") options.threads = static_cast<unsigned>(*n);
         else options.windows = *n;
       }
