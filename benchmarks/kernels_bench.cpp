@@ -17,6 +17,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
+#include <ccd/motion/state_cursor.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/queries/ray_sphere.hpp>
@@ -90,7 +91,8 @@ void sphere_contact_linear_ray(benchmark::State& state) {
 struct PipelineScene {
   ccd::Scene scene;
   ccd::Trajectories traj;
-  std::vector<ccd::BodyState> start;
+  std::vector<ccd::BodyState> start;  // at t = 0, from the state cursor, as the runner does
+  std::vector<std::size_t> piece;     // each body's piece at t = 0
 };
 
 const PipelineScene& pipeline_scene() {
@@ -104,9 +106,11 @@ const PipelineScene& pipeline_scene() {
       body.position = ccd::Vec3(peer.centres(0)[i], peer.centres(1)[i], peer.centres(2)[i]);
       body.velocity = ccd::Vec3(peer.velocities(0)[i], peer.velocities(1)[i], peer.velocities(2)[i]);
       p.scene.bodies.push_back(body);
-      p.start.push_back({body.position, body.velocity, body.radius});
     }
     p.traj = ccd::Trajectories(p.scene);
+    ccd::StateCursor cursor(p.traj);
+    cursor.evaluate(0.0, p.start);
+    p.piece.assign(cursor.pieces().begin(), cursor.pieces().end());
     return p;
   }();
   return s;
@@ -124,7 +128,7 @@ void pipeline(benchmark::State& state, const char* bound_name) {
   ctx.exact = spec.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.acceleration_bound = 0.0;  // linear motion: the true bound
   ccd::StepResult step;
-  for (auto _ : state) step_pipeline.run(ctx, s.traj, step);
+  for (auto _ : state) step_pipeline.run(ctx, s.traj, step, nullptr, s.piece);
   state.counters["candidates"] = static_cast<double>(step.candidates.size());
   state.counters["passed"] = static_cast<double>(step.passed.size());
   state.counters["confirmed"] = static_cast<double>(step.contacts.size());

@@ -133,6 +133,16 @@ TEST_CASE("counts do not depend on the thread count; shards merge into the whole
     // A missing shard is an error.
     CHECK(ccdlab("merge " + (dir.path / "s1.json").string() + " -o " + (dir.path / "bad.json").string()) == 2);
     CHECK_FALSE(fs::exists(dir.path / "bad.json"));
+    // A malformed shard: the message names its file and the field.
+    json broken = read((dir.path / "s2.json").string());
+    broken["shard"]["count"] = "three";
+    const std::string broken_path = dir.write("broken.json", broken);
+    std::string err;
+    CHECK(ccdlab("merge " + (dir.path / "s1.json").string() + " " + broken_path + " " +
+                     (dir.path / "s3.json").string() + " -o " + (dir.path / "bad.json").string(),
+                 &err, &dir) == 2);
+    CHECK(err.find(broken_path + ": shard.count: must be an integer in [1, 4096]") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path / "bad.json"));
   }
 }
 
