@@ -102,7 +102,7 @@ TEST_CASE("ccdlab run rejects bad experiments with exit 2 and writes nothing", "
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("counts do not depend on the thread count; shards merge into the whole run", "[run][cli]") {
+TEST_CASE("counts do not depend on the thread count, shards merge into the whole run", "[run][cli]") {
   const TempDir dir;
   const std::string e = dir.write("e.json", small_experiment());
   const std::string one = (dir.path / "one.json").string(), two = (dir.path / "two.json").string();

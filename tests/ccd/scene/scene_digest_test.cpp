@@ -28,7 +28,7 @@ TEST_CASE("the scene digest is SHA-256 of the canonical scene text", "[scene][di
   CHECK(ccd::canonical_scene_text(s).rfind("{\"bodies\":[{\"acceleration\":[0.0,0.0,0.0]", 0) == 0);
 }
 
-TEST_CASE("the same scene written differently has the same digest; any change changes it", "[scene][digest]") {
+TEST_CASE("the same scene written differently has the same digest, any change changes it", "[scene][digest]") {
   const json j = json::parse(kScene);
   const std::string digest = ccd::scene_digest(parse(j));
   SECTION("spelling: 1 vs 1.0 vs 1e0, key order, whitespace") {

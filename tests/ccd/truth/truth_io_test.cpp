@@ -46,7 +46,7 @@ TEST_CASE("truth files round-trip bit for bit", "[truth][io]") {
   CHECK(ccd::truth_from_json(json::parse(ccd::truth_to_text(empty)), "t.json").events.empty());
 }
 
-TEST_CASE("truth files carry optional per-event errors; exact events write none", "[truth][io]") {
+TEST_CASE("truth files carry optional per-event errors, exact events write none", "[truth][io]") {
   TruthFile t = sample();
   // An exact truth writes the four fields per event, nothing else.
   CHECK(ccd::truth_to_text(t).find("error") == std::string::npos);
