@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# Submits one experiment to Slurm as three dependent jobs (docs/experiments.md):
+#   1. truth.sbatch  `ccdlab truth`: the scene's ground truth, once, into DIR/truth.json
+#   2. shard.sbatch  a job array of N tasks; task K runs `ccdlab run --shard K/N
+#                    --truth DIR/truth.json` into DIR/shards/NAME.shardKofN.json
+#   3. merge.sbatch  `ccdlab merge`: the N shards into DIR/NAME.json
+# Each job waits for the previous one to succeed (--dependency=afterok); when one fails,
+# the jobs after it never start. Slurm's own logs go to DIR/logs/, the job ids to
+# DIR/jobs.txt (one `truth|shards|merge ID` a line).
+#
+# usage: scripts/slurm/submit.sh EXPERIMENT.json [--shards N] [--threads T] [--out DIR]
+#                                [--ccdlab PATH] [--modules "MODULE ..."] [-- SBATCH_OPTION ...]
+#   --shards N    array size (default 8)
+#   --threads T   CPUs of each job (--cpus-per-task) and ccdlab's --threads (default 1)
+#   --out DIR     where everything lands, on a file system every node sees
+#                 (default results/slurm/NAME in this clone); must be empty or absent
+#   --ccdlab PATH the ccdlab binary the jobs run (default build/ccdlab, or
+#                 $CCDLAB_BUILD_DIR/ccdlab)
+#   --modules L   environment modules each job loads first (`module load L`)
+#   -- ...        options for sbatch, given to all three jobs (--partition, --account,
+#                 --time, --mem, ...)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+here=$root/scripts/slurm
+
+usage() {
+  sed -n '/^# usage:/,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2
+  exit 2
+}
+die() { echo "submit.sh: $*" >&2; exit 2; }
+
+[[ $# -ge 1 && $1 != -* ]] || usage
+experiment=$(realpath "$1") || die "$1: no such file"
+shift
+shards=8 threads=1 out="" modules=""
+ccdlab=${CCDLAB_BUILD_DIR:-$root/build}/ccdlab
+sbatch_options=()
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    --shards) [[ $# -ge 2 ]] || usage; shards=$2; shift 2 ;;
+    --threads) [[ $# -ge 2 ]] || usage; threads=$2; shift 2 ;;
+    --out) [[ $# -ge 2 ]] || usage; out=$2; shift 2 ;;
+    --ccdlab) [[ $# -ge 2 ]] || usage; ccdlab=$2; shift 2 ;;
+    --modules) [[ $# -ge 2 ]] || usage; modules=$2; shift 2 ;;
+    --) shift; sbatch_options=("$@"); break ;;
+    *) usage ;;
+  esac
+done
+[[ $shards =~ ^[1-9][0-9]*$ ]] || die "--shards needs a positive integer"
+[[ $threads =~ ^[1-9][0-9]*$ ]] || die "--threads needs a positive integer"
+[[ -x $ccdlab ]] || die "$ccdlab not found: build first (./scripts/build.sh -DCCDLAB_NATIVE=OFF)"
+ccdlab=$(realpath "$ccdlab")
+command -v sbatch >/dev/null || die "sbatch not found: not on a Slurm cluster (or its module is not loaded)"
+
+{ read -r name; read -r kind scene; } < <(/usr/bin/env python3 "$root/scripts/experiment-info.py" "$experiment") ||
+  die "cannot read $experiment"
+out=${out:-$root/results/slurm/$name}
+if [[ -d $out && -n $(ls -A "$out") ]]; then
+  die "$out already holds a run: remove it or give another --out"
+fi
+mkdir -p "$out/shards" "$out/logs"
+out=$(realpath "$out")
+
+# What the job scripts read (sbatch passes the submitting environment on by default).
+export CCDLAB=$ccdlab CCDLAB_EXPERIMENT=$experiment CCDLAB_NAME=$name CCDLAB_SHARDS=$shards
+export CCDLAB_RUN_DIR=$out CCDLAB_MODULES=$modules CCDLAB_SCENE="" CCDLAB_SCENE_GENERATOR="" CCDLAB_TRUTH=""
+if [[ $kind == file ]]; then CCDLAB_SCENE=$scene; else CCDLAB_SCENE_GENERATOR=$scene; fi
+
+submit() { sbatch --parsable --cpus-per-task="$threads" "${sbatch_options[@]}" "$@" | cut -d';' -f1; }
+
+# The shared truth needs `ccdlab run --truth`; a ccdlab without it makes every shard
+# compute the truth itself (same counts, more CPU time), and no truth job is submitted.
+shard_after=()
+if "$ccdlab" run --help | grep -q -- --truth; then
+  CCDLAB_TRUTH=$out/truth.json
+  truth_job=$(submit --output="$out/logs/truth-%j.out" "$here/truth.sbatch")
+  echo "truth $truth_job" >"$out/jobs.txt"
+  shard_after=(--dependency="afterok:$truth_job")
+else
+  echo "submit.sh: note: $ccdlab run has no --truth: every shard computes the ground truth itself" >&2
+  : >"$out/jobs.txt"
+fi
+shard_job=$(submit --array="1-$shards" "${shard_after[@]}" --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch")
+echo "shards $shard_job" >>"$out/jobs.txt"
+merge_job=$(submit --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" "$here/merge.sbatch")
+echo "merge $merge_job" >>"$out/jobs.txt"
+
+echo "submitted: $(tr '\n' ' ' <"$out/jobs.txt")(squeue --me to follow)"
+echo "merged results, once job $merge_job has completed: $out/$name.json"
