@@ -28,7 +28,7 @@ timeout=${CCDLAB_CLUSTER_TIMEOUT:-900}
 shards=8
 started=$SECONDS
 
-checks=0 failures=0
+checks=0 failures=0 interrupted=""
 pass() { checks=$((checks + 1)); printf 'ok    %s\n' "$*"; }
 fail() { checks=$((checks + 1)) failures=$((failures + 1)); printf 'FAIL  %s\n' "$*"; }
 abort() { fail "$*"; exit 1; }  # a failed step that the later ones need
@@ -114,7 +114,9 @@ cleanup() {
   else
     rm -rf "$tmp"
   fi
-  if [[ $rc -eq 0 ]]; then
+  if [[ -n $interrupted ]]; then
+    printf 'cluster test: interrupted by %s after %d s\n' "$interrupted" "$(elapsed "$started")"
+  elif [[ $rc -eq 0 ]]; then
     printf 'cluster test: all %d checks passed in %d s\n' "$checks" "$(elapsed "$started")"
   else
     printf 'cluster test: FAILED (%d of %d checks failed) after %d s\n' "$failures" "$checks" "$(elapsed "$started")"
@@ -122,8 +124,8 @@ cleanup() {
   exit "$rc"
 }
 trap cleanup EXIT
-trap 'exit 130' INT
-trap 'exit 143' TERM
+trap 'interrupted=SIGINT; exit 130' INT
+trap 'interrupted=SIGTERM; exit 143' TERM
 
 # --- 1. packages and build -------------------------------------------------------------
 "$root/scripts/install-deps.sh" slurm-wlm munge parallel
@@ -180,7 +182,7 @@ MpiDefault=none
 MailProg=/bin/true
 SchedulerType=sched/builtin
 # a job whose dependency can no longer be met (a shard failed) is cancelled, not held
-SchedulerParameters=kill_invalid_depend
+DependencyParameters=kill_invalid_depend
 SelectType=select/cons_tres
 SelectTypeParameters=CR_CPU
 # trust the CPU count below, whatever the hardware
@@ -211,8 +213,10 @@ while read -r what id; do job[$what]=$id; done <"$tmp/slurm/jobs.txt"
 ids=$(tr '\n' ' ' <"$tmp/slurm/jobs.txt" | awk '{for (i = 2; i <= NF; i += 2) printf "%s%s", (i > 2 ? "," : ""), $i}')
 pass "submitted: $(tr '\n' ' ' <"$tmp/slurm/jobs.txt")(submit.sh)"
 
-while [[ -n $(timeout 10 squeue -h -j "$ids" -o %i 2>/dev/null || echo waiting) ]]; do
+while queued=$(timeout 10 squeue -h -j "$ids" -o '%i %r' 2>/dev/null || echo "? no answer from squeue"); [[ -n $queued ]]; do
   (($(elapsed $t) < timeout)) || abort "slurm: jobs $ids still queued or running after $timeout s"
+  # kill_invalid_depend cancels such jobs; should they stay, waiting would be in vain
+  grep -qv DependencyNeverSatisfied <<<"$queued" || break
   sleep 2
 done
 states=$(for id in ${ids//,/ }; do scontrol -o show job "$id"; done | grep -o 'JobState=[A-Z_]* .*ExitCode=[0-9:]*' |
