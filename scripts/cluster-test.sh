@@ -13,13 +13,13 @@
 #      8-task shard array, a merge job), waits at most $CCDLAB_CLUSTER_TIMEOUT seconds
 #      (default 900), and compares the merged results with the reference
 #   5. runs a small experiment with scripts/parallel-run.sh as 1, 2, 3, 5, 8, 12 and 13
-#      shards (12 jobs: one shard per job, and one shard with none) in shuffled order
+#      shards (12 jobs: one shard per job, and one shard with none) in shuffled order,
 #      and compares each merged result with a single run
 #   6. stops every daemon it started by process id, and any process they left (found by
 #      a marker in their environment), also when a step fails or on Ctrl-C
 # Prints one line per check; exits 0 when all pass, 1 otherwise. Run as root (slurmd
-# starts the jobs). About 6 minutes on a 2-core machine, 4 of them the two runs of the
-# default experiment. Set CCDLAB_CLUSTER_KEEP=1 to keep the temporary directory.
+# starts the jobs). About 2 to 3 minutes on a 2-core machine, most of it the two runs of
+# the default experiment. Set CCDLAB_CLUSTER_KEEP=1 to keep the temporary directory.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${CCDLAB_BUILD_DIR:-$root/build}
@@ -33,6 +33,10 @@ pass() { checks=$((checks + 1)); printf 'ok    %s\n' "$*"; }
 fail() { checks=$((checks + 1)) failures=$((failures + 1)); printf 'FAIL  %s\n' "$*"; }
 abort() { fail "$*"; exit 1; }  # a failed step that the later ones need
 elapsed() { echo $((SECONDS - $1)); }
+truth_sources() {  # truth_sources RESULTS.json...: where their ground truth came from, each once
+  python3 -c 'import json, sys
+print(" ".join(sorted({json.load(open(f))["truth"].get("source", "?") for f in sys.argv[1:]})))' "$@"
+}
 
 [[ $(id -u) -eq 0 ]] || { echo "cluster-test.sh: run as root (slurmd starts the jobs as their user)" >&2; exit 2; }
 
@@ -229,9 +233,7 @@ pass "slurm: ${#job[@]} jobs, $expected tasks COMPLETED with exit 0 in $(elapsed
 merged=$tmp/slurm/default.json
 [[ -f $merged ]] || abort "slurm: no merged results at $merged"
 if [[ -n ${job[truth]:-} ]]; then
-  sources=$(python3 -c '
-import json, sys
-print(" ".join(sorted({json.load(open(f))["truth"].get("source", "?") for f in sys.argv[1:]})))' "$tmp"/slurm/shards/*.json)
+  sources=$(truth_sources "$tmp"/slurm/shards/*.json)
   if [[ $sources == "$tmp/slurm/truth.json" ]]; then
     pass "slurm: all $shards shards read the one truth file (truth.source)"
   else
@@ -262,9 +264,13 @@ for n in 1 2 3 5 8 12 13; do
   fi
   # parallel writes its job log as the shards finish: the completion order
   order=$(tail -n +2 "$tmp/parallel-$n/joblog.txt" | grep -o -- '--shard [0-9]*' | cut -d' ' -f2 | tr '\n' ' ')
-  if out=$(python3 "$root/scripts/compare-results.py" "$tmp/small-single.json" "$tmp/parallel-$n/small.json"); then
-    pass "parallel: $n shards, finished in the order ${order% } ($(elapsed $t) s): merged = single run ($out)"
+  what="parallel: $n shard(s) finished in the order ${order% } ($(elapsed $t) s)"
+  sources=$(truth_sources "$tmp/parallel-$n"/shards/*.json)
+  if [[ -f $tmp/parallel-$n/truth.json && $sources != "$tmp/parallel-$n/truth.json" ]]; then
+    fail "$what: the shards took their truth from $sources, not the one truth file"
+  elif out=$(python3 "$root/scripts/compare-results.py" "$tmp/small-single.json" "$tmp/parallel-$n/small.json"); then
+    pass "$what: merged = single run ($out)"
   else
-    fail "parallel: $n shards, finished in the order ${order% }: merged differs from the single run: $out"
+    fail "$what: merged differs from the single run: $out"
   fi
 done

@@ -11,7 +11,8 @@
 # usage: scripts/slurm/submit.sh EXPERIMENT.json [--shards N] [--threads T] [--out DIR]
 #                                [--ccdlab PATH] [--modules "MODULE ..."] [-- SBATCH_OPTION ...]
 #   --shards N    array size (default 8)
-#   --threads T   CPUs of each job (--cpus-per-task) and ccdlab's --threads (default 1)
+#   --threads T   CPUs of the truth job and of each shard task (--cpus-per-task), and
+#                 ccdlab's --threads there (default 1); the merge job takes 1 CPU
 #   --out DIR     where everything lands, on a file system every node sees
 #                 (default results/slurm/NAME in this clone); must be empty or absent
 #   --ccdlab PATH the ccdlab binary the jobs run (default build/ccdlab, or
@@ -66,23 +67,23 @@ export CCDLAB=$ccdlab CCDLAB_EXPERIMENT=$experiment CCDLAB_NAME=$name CCDLAB_SHA
 export CCDLAB_RUN_DIR=$out CCDLAB_MODULES=$modules CCDLAB_SCENE="" CCDLAB_SCENE_GENERATOR="" CCDLAB_TRUTH=""
 if [[ $kind == file ]]; then CCDLAB_SCENE=$scene; else CCDLAB_SCENE_GENERATOR=$scene; fi
 
-submit() { sbatch --parsable --cpus-per-task="$threads" "${sbatch_options[@]}" "$@" | cut -d';' -f1; }
+submit() { sbatch --parsable "${sbatch_options[@]}" "$@" | cut -d';' -f1; }
 
 # The shared truth needs `ccdlab run --truth`; a ccdlab without it makes every shard
 # compute the truth itself (same counts, more CPU time), and no truth job is submitted.
 shard_after=()
 if "$ccdlab" run --help | grep -q -- --truth; then
   CCDLAB_TRUTH=$out/truth.json
-  truth_job=$(submit --output="$out/logs/truth-%j.out" "$here/truth.sbatch")
+  truth_job=$(submit --cpus-per-task="$threads" --output="$out/logs/truth-%j.out" "$here/truth.sbatch")
   echo "truth $truth_job" >"$out/jobs.txt"
   shard_after=(--dependency="afterok:$truth_job")
 else
   echo "submit.sh: note: $ccdlab run has no --truth: every shard computes the ground truth itself" >&2
   : >"$out/jobs.txt"
 fi
-shard_job=$(submit --array="1-$shards" "${shard_after[@]}" --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch")
+shard_job=$(submit --cpus-per-task="$threads" --array="1-$shards" "${shard_after[@]}" --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch")
 echo "shards $shard_job" >>"$out/jobs.txt"
-merge_job=$(submit --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" "$here/merge.sbatch")
+merge_job=$(submit --cpus-per-task=1 --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" "$here/merge.sbatch")
 echo "merge $merge_job" >>"$out/jobs.txt"
 
 echo "submitted: $(tr '\n' ' ' <"$out/jobs.txt")(squeue --me to follow)"
