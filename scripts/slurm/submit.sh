@@ -61,29 +61,45 @@ if [[ -d $out && -n $(ls -A "$out") ]]; then
 fi
 mkdir -p "$out/shards" "$out/logs"
 out=$(realpath "$out")
+# Should a submission fail half-way, cancel the jobs already queued and remove DIR again.
+submitted=()
+trap 'rc=$?; if [[ $rc -ne 0 ]]; then
+  [[ ${#submitted[@]} -eq 0 ]] || scancel "${submitted[@]}"
+  rm -rf "$out"
+  echo "submit.sh: submission failed; nothing left queued" >&2
+fi' EXIT
 
 # What the job scripts read (sbatch passes the submitting environment on by default).
 export CCDLAB=$ccdlab CCDLAB_EXPERIMENT=$experiment CCDLAB_NAME=$name CCDLAB_SHARDS=$shards
 export CCDLAB_RUN_DIR=$out CCDLAB_MODULES=$modules CCDLAB_SCENE="" CCDLAB_SCENE_GENERATOR="" CCDLAB_TRUTH=""
 if [[ $kind == file ]]; then CCDLAB_SCENE=$scene; else CCDLAB_SCENE_GENERATOR=$scene; fi
 
-submit() { sbatch --parsable "${sbatch_options[@]}" "$@" | cut -d';' -f1; }
+submit() {  # submit VAR SBATCH_ARGS...: sets VAR to the job id
+  local var=$1 id
+  shift
+  id=$(sbatch --parsable "${sbatch_options[@]}" "$@" | cut -d';' -f1)
+  [[ $id =~ ^[0-9]+$ ]] || return 1
+  submitted+=("$id")
+  printf -v "$var" %s "$id"
+}
 
 # The shared truth needs `ccdlab run --truth`; a ccdlab without it makes every shard
 # compute the truth itself (same counts, more CPU time), and no truth job is submitted.
 shard_after=()
 if "$ccdlab" run --help | grep -q -- --truth; then
   CCDLAB_TRUTH=$out/truth.json
-  truth_job=$(submit --cpus-per-task="$threads" --output="$out/logs/truth-%j.out" "$here/truth.sbatch")
+  submit truth_job --cpus-per-task="$threads" --output="$out/logs/truth-%j.out" "$here/truth.sbatch"
   echo "truth $truth_job" >"$out/jobs.txt"
   shard_after=(--dependency="afterok:$truth_job")
 else
   echo "submit.sh: note: $ccdlab run has no --truth: every shard computes the ground truth itself" >&2
   : >"$out/jobs.txt"
 fi
-shard_job=$(submit --cpus-per-task="$threads" --array="1-$shards" "${shard_after[@]}" --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch")
+submit shard_job --cpus-per-task="$threads" --array="1-$shards" "${shard_after[@]}" \
+  --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch"
 echo "shards $shard_job" >>"$out/jobs.txt"
-merge_job=$(submit --cpus-per-task=1 --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" "$here/merge.sbatch")
+submit merge_job --cpus-per-task=1 --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" \
+  "$here/merge.sbatch"
 echo "merge $merge_job" >>"$out/jobs.txt"
 
 echo "submitted: $(tr '\n' ' ' <"$out/jobs.txt")(squeue --me to follow)"
