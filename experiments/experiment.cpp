@@ -2,6 +2,7 @@
 
 #include "method.hpp"
 
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
@@ -15,37 +16,27 @@ namespace ccdlab {
 namespace {
 
 using nlohmann::json;
+using ccd::JsonReader;
 
-[[noreturn]] void fail(const std::string& file, const std::string& field, const std::string& what) {
-  throw ccd::InputError(file, field, what);
-}
-
-double positive_number(const json& v, const std::string& file, const std::string& field) {
-  if (!v.is_number()) fail(file, field, "must be a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x) || x <= 0.0) fail(file, field, "must be a finite number > 0");
+double positive_number(const JsonReader& r, const json& v, const std::string& field) {
+  const double x = r.number(v, field);
+  if (x <= 0.0) r.fail(field, "must be a finite number > 0");
   return x;
 }
 
-std::vector<double> parse_dt(const json& j, const std::string& file) {
+std::vector<double> parse_dt(const JsonReader& r, const json& j) {
   std::vector<double> dt;
   if (j.is_array()) {
-    if (j.empty()) fail(file, "dt", "must not be empty");
-    for (std::size_t i = 0; i < j.size(); ++i)
-      dt.push_back(positive_number(j[i], file, "dt[" + std::to_string(i) + "]"));
+    if (j.empty()) r.fail("dt", "must not be empty");
+    for (std::size_t i = 0; i < j.size(); ++i) dt.push_back(positive_number(r, j[i], "dt[" + std::to_string(i) + "]"));
   } else if (j.is_object()) {
-    for (const char* k : {"from", "to", "count"})
-      if (!j.contains(k)) fail(file, std::string("dt.") + k, "missing required field");
-    const double from = positive_number(j["from"], file, "dt.from");
-    const double to = positive_number(j["to"], file, "dt.to");
-    if (!j["count"].is_number_integer() || j["count"].get<long long>() < 1 || j["count"].get<long long>() > 100000)
-      fail(file, "dt.count", "must be an integer in [1, 100000]");
-    const int count = j["count"].get<int>();
+    const double from = positive_number(r, r.require(j, "from", "dt"), "dt.from");
+    const double to = positive_number(r, r.require(j, "to", "dt"), "dt.to");
+    const auto count = static_cast<int>(r.integer(r.require(j, "count", "dt"), "dt.count", 1, 100000));
     std::string spacing = "log";
     if (j.contains("spacing")) {
-      if (!j["spacing"].is_string()) fail(file, "dt.spacing", "must be \"log\" or \"linear\"");
-      spacing = j["spacing"].get<std::string>();
-      if (spacing != "log" && spacing != "linear") fail(file, "dt.spacing", "must be \"log\" or \"linear\"");
+      spacing = r.string(j["spacing"], "dt.spacing");
+      if (spacing != "log" && spacing != "linear") r.fail("dt.spacing", "must be \"log\" or \"linear\"");
     }
     if (count == 1) {
       dt.push_back(from);
@@ -60,7 +51,7 @@ std::vector<double> parse_dt(const json& j, const std::string& file) {
       }
     }
   } else {
-    fail(file, "dt", "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
+    r.fail("dt", "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
   }
   std::sort(dt.begin(), dt.end(), std::greater<>());
   dt.erase(std::unique(dt.begin(), dt.end()), dt.end());
@@ -70,56 +61,42 @@ std::vector<double> parse_dt(const json& j, const std::string& file) {
 }  // namespace
 
 Experiment experiment_from_json(const json& j, const std::string& file) {
-  if (!j.is_object()) fail(file, "", "an experiment must be a JSON object");
-  if (!j.contains("format")) fail(file, "format", "missing required field");
-  if (!j["format"].is_string() || j["format"].get<std::string>() != "ccdlab-experiment/1")
-    fail(file, "format", "must be \"ccdlab-experiment/1\"");
+  const JsonReader r{file};
+  if (!j.is_object()) r.fail("", "an experiment must be a JSON object");
+  if (r.string(r.require(j, "format", ""), "format") != "ccdlab-experiment/1")
+    r.fail("format", "must be \"ccdlab-experiment/1\"");
   Experiment e;
-  if (j.contains("name")) {
-    if (!j["name"].is_string()) fail(file, "name", "must be a string");
-    e.name = j["name"].get<std::string>();
-  } else {
-    e.name = std::filesystem::path(file).stem().string();
-  }
-  if (!j.contains("scene")) fail(file, "scene", "missing required field");
-  const json& scene = j["scene"];
+  e.name = j.contains("name") ? r.string(j["name"], "name") : std::filesystem::path(file).stem().string();
+  const json& scene = r.require(j, "scene", "");
   if (scene.is_string()) {
     e.scene_path = scene.get<std::string>();
-    if (e.scene_path.empty()) fail(file, "scene", "must not be empty");
+    if (e.scene_path.empty()) r.fail("scene", "must not be empty");
   } else if (scene.is_object()) {
     if (!scene.contains("generator") || !scene["generator"].is_string())
-      fail(file, "scene.generator", "missing required field (a generator name)");
+      r.fail("scene.generator", "missing required field (a generator name)");
     e.scene_generator = scene;
   } else {
-    fail(file, "scene", "must be a scene file path or {\"generator\": NAME, ...}");
+    r.fail("scene", "must be a scene file path or {\"generator\": NAME, ...}");
   }
-  if (!j.contains("dt")) fail(file, "dt", "missing required field");
-  e.dt = parse_dt(j["dt"], file);
-  if (!j.contains("methods")) fail(file, "methods", "missing required field");
-  const json& methods = j["methods"];
-  if (!methods.is_array() || methods.empty()) fail(file, "methods", "must be a non-empty array of method names");
+  e.dt = parse_dt(r, r.require(j, "dt", ""));
+  const json& methods = r.require(j, "methods", "");
+  if (!methods.is_array() || methods.empty()) r.fail("methods", "must be a non-empty array of method names");
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const std::string field = "methods[" + std::to_string(i) + "]";
-    if (!methods[i].is_string()) fail(file, field, "must be a string BOUND/BROADPHASE");
+    if (!methods[i].is_string()) r.fail(field, "must be a string BOUND/BROADPHASE");
     try {
       e.methods.push_back(parse_method(methods[i].get<std::string>()).name);
     } catch (const std::invalid_argument& err) {
-      fail(file, field, err.what());
+      r.fail(field, err.what());
     }
     if (std::count(e.methods.begin(), e.methods.end(), e.methods.back()) > 1)
-      fail(file, field, "method '" + e.methods.back() + "' is listed twice");
+      r.fail(field, "method '" + e.methods.back() + "' is listed twice");
   }
   if (j.contains("acceleration_bound") && !j["acceleration_bound"].is_null()) {
-    const json& a = j["acceleration_bound"];
-    if (!a.is_number() || !std::isfinite(a.get<double>()) || a.get<double>() < 0.0)
-      fail(file, "acceleration_bound", "must be a finite number >= 0");
-    e.acceleration_bound = a.get<double>();
+    e.acceleration_bound = r.number(j["acceleration_bound"], "acceleration_bound");
+    if (e.acceleration_bound < 0.0) r.fail("acceleration_bound", "must be a finite number >= 0");
   }
-  if (j.contains("repeats")) {
-    if (!j["repeats"].is_number_integer() || j["repeats"].get<long long>() < 1 || j["repeats"].get<long long>() > 1000)
-      fail(file, "repeats", "must be an integer in [1, 1000]");
-    e.repeats = j["repeats"].get<int>();
-  }
+  if (j.contains("repeats")) e.repeats = static_cast<int>(r.integer(j["repeats"], "repeats", 1, 1000));
   e.source = j;
   return e;
 }
@@ -137,8 +114,8 @@ Experiment load_experiment(const std::string& path) {
 void check_dt_against_horizon(const Experiment& e, double horizon, const std::string& file) {
   for (std::size_t i = 0; i < e.dt.size(); ++i)
     if (e.dt[i] > horizon)
-      fail(file, "dt", "timestep " + std::to_string(e.dt[i]) + " is larger than the scene's horizon " +
-                           std::to_string(horizon));
+      throw ccd::InputError(file, "dt", "timestep " + std::to_string(e.dt[i]) + " is larger than the scene's horizon " +
+                                            std::to_string(horizon));
 }
 
 json experiment_to_json(const Experiment& e) {

@@ -18,17 +18,21 @@ MethodSpec parse_method(std::string_view name) {
   MethodSpec m;
   m.name = std::string(name);
   m.bound = ccd::parse_bound(name.substr(0, slash));
-  m.broad_phase = &ccd::find_broad_phase(name.substr(slash + 1));
+  m.broad_phase = ccd::parse_broad_phase(name.substr(slash + 1));
   return m;
+}
+
+nlohmann::json options_json(const MethodSpec& method) {
+  return {{"bound", method.bound.options.to_json()}, {"broad_phase", method.broad_phase.options.to_json()}};
 }
 
 std::vector<std::string> all_method_names() {
   std::vector<std::string> out;
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string bound(b.name);
-    if (b.parameterised) {
+    if (!b.parameters.empty()) {  // the first option's default, as ":M"
       bound += ':';
-      bound += std::to_string(b.default_parameter);
+      bound += ccd::format_number(b.parameters[0].default_value);
     }
     for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry()) out.push_back(bound + "/" + std::string(p.name));
   }

@@ -5,18 +5,22 @@
 #include "progress.hpp"
 #include "runner.hpp"
 
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
+#include <ccd/util/parallel_for.hpp>
+#include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 namespace ccdlab {
 
@@ -68,6 +72,27 @@ std::string job_label(const std::string& method, double dt) {
 
 }  // namespace
 
+bool check_stored_truth(const ccd::TruthFile& truth, const ccd::Scene& scene, const std::string& file) {
+  if (truth.version >= 2) {
+    const std::string digest = ccd::scene_digest(scene);
+    if (truth.scene_sha256 != digest)
+      throw ccd::InputError(file, "scene_sha256",
+                            "this is the ground truth of another scene (" + truth.scene_sha256.substr(0, 12) +
+                                "..., the experiment's scene is " + digest.substr(0, 12) +
+                                "...); compute it with `ccdlab truth SCENE.json -o FILE`");
+  }
+  if (truth.horizon != scene.horizon)
+    throw ccd::InputError(file, "horizon",
+                          "is " + ccd::format_number(truth.horizon) + ", the experiment's scene runs to " +
+                              ccd::format_number(scene.horizon));
+  for (std::size_t i = 0; i < truth.events.size(); ++i)
+    if (truth.events[i].b >= scene.bodies.size())
+      throw ccd::InputError(file, "events[" + std::to_string(i) + "].b",
+                            "body " + std::to_string(truth.events[i].b) + " does not exist (the scene has " +
+                                std::to_string(scene.bodies.size()) + " bodies)");
+  return truth.version >= 2;
+}
+
 json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options) {
   struct Job {
     std::size_t index;
@@ -84,12 +109,13 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
 
   Progress progress(jobs.size(), options.quiet);
   progress.phase("scene: " + std::to_string(scene.bodies.size()) + " bodies, horizon " +
-                 std::to_string(scene.horizon) + " s; computing exact ground truth");
+                 std::to_string(scene.horizon) + " s; " +
+                 (options.truth ? "ground truth from " + options.truth_file : std::string("computing exact ground truth")));
   const auto t0 = std::chrono::steady_clock::now();
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
   topts.threads = options.threads;
-  const TruthIndex truth(ccd::compute_truth(traj, topts));
+  const TruthIndex truth(options.truth ? options.truth->events : ccd::compute_truth(traj, topts));
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -109,33 +135,30 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.cancel = options.cancel;
 
   std::vector<RunRecord> records(jobs.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < jobs.size();) {
-      if (options.cancel && options.cancel->load()) return;
-      records[i] = run_method(in, jobs[i].method, jobs[i].dt);
-      progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {
+    if (options.cancel && options.cancel->load()) {
+      records[i].cancelled = true;
+      return;
     }
-  };
-  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+    records[i] = run_method(in, jobs[i].method, jobs[i].dt);
+    progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  });
   progress.finish();
   if (options.cancel && options.cancel->load()) return json();
   for (const RunRecord& r : records)
     if (r.cancelled) return json();
 
   json out;
-  out["format"] = "ccdlab-results/1";
+  out["format"] = "ccdlab-results/2";
   out["experiment"] = experiment_to_json(e);
   out["experiment"]["acceleration_bound_used"] = in.acceleration_bound;
   out["scene"] = scene_summary(e, scene, traj);
   out["truth"] = {{"events", truth.events().size()},
                   {"tangent_events", tangent},
                   {"pairs", pairs.size()},
-                  {"seconds", truth_seconds}};
+                  {"seconds", truth_seconds},
+                  {"source", options.truth ? options.truth_file : std::string("computed")},
+                  {"scene_sha256", ccd::scene_digest(scene)}};
   out["environment"] = environment_json(options.threads);
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();
@@ -149,38 +172,65 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   return out;
 }
 
-json merge_results(const std::vector<json>& shards) {
+json merge_results(const std::vector<json>& shards, const std::vector<std::string>& files) {
   if (shards.empty()) throw std::runtime_error("no results to merge");
+  if (files.size() != shards.size()) throw std::logic_error("merge_results: one file name per shard");
+  // Every field read here goes through the one JSON reader: a malformed shard names its
+  // file and the field.
+  struct Shard {
+    std::size_t jobs = 0;
+    long long count = 0, index = 0;
+  };
+  auto read_shard = [&](std::size_t s) {
+    const ccd::JsonReader r{files[s]};
+    const json& j = shards[s];
+    if (!j.is_object() || r.string(r.require(j, "format", ""), "format") != "ccdlab-results/2")
+      r.fail("format", "not a ccdlab-results/2 file");
+    const json& shard = r.require(j, "shard", "");
+    Shard out;
+    out.jobs = static_cast<std::size_t>(r.integer(r.require(shard, "jobs", "shard"), "shard.jobs", 0, 1LL << 40));
+    out.count = r.integer(r.require(shard, "count", "shard"), "shard.count", 1, 4096);
+    out.index = r.integer(r.require(shard, "index", "shard"), "shard.index", 1, out.count);
+    for (const char* key : {"experiment", "truth", "scene", "records", "peak_memory_bytes"}) r.require(j, key, "");
+    const json& records = j["records"];
+    if (!records.is_array()) r.fail("records", "must be an array");
+    for (std::size_t i = 0; i < records.size(); ++i)
+      r.integer(r.require(records[i], "job", "records[" + std::to_string(i) + "]"),
+                "records[" + std::to_string(i) + "].job", 0, static_cast<long long>(out.jobs) - 1);
+    r.integer(j["peak_memory_bytes"], "peak_memory_bytes", 0, std::numeric_limits<long long>::max());
+    return out;
+  };
   const json& first = shards.front();
+  const Shard head = read_shard(0);
   std::map<std::size_t, json> by_job;
-  std::set<int> seen_shards;
-  const std::size_t total = first["shard"]["jobs"].get<std::size_t>();
+  std::set<long long> seen_shards;
+  long long peak = 0;
   for (std::size_t s = 0; s < shards.size(); ++s) {
     const json& r = shards[s];
-    const std::string which = "input " + std::to_string(s + 1);
-    if (r.value("format", "") != "ccdlab-results/1") throw std::runtime_error(which + ": not a ccdlab-results/1 file");
+    const Shard sh = read_shard(s);
+    const std::string& which = files[s];
     if (r["experiment"] != first["experiment"])
-      throw std::runtime_error(which + ": a different experiment than input 1");
+      throw ccd::InputError(which, "experiment", "a different experiment than " + files[0]);
     if (r["truth"]["events"] != first["truth"]["events"] || r["scene"]["bodies"] != first["scene"]["bodies"])
-      throw std::runtime_error(which + ": a different scene or ground truth than input 1");
-    if (r["shard"]["count"] != first["shard"]["count"])
-      throw std::runtime_error(which + ": sharded " + r["shard"]["count"].dump() + " ways, input 1 " +
-                               first["shard"]["count"].dump() + " ways");
-    if (!seen_shards.insert(r["shard"]["index"].get<int>()).second)
-      throw std::runtime_error(which + ": shard " + r["shard"]["index"].dump() + " given twice");
+      throw ccd::InputError(which, "truth", "a different scene or ground truth than " + files[0]);
+    if (sh.count != head.count)
+      throw ccd::InputError(which, "shard.count", "sharded " + std::to_string(sh.count) + " ways, " + files[0] + " " +
+                                                      std::to_string(head.count) + " ways");
+    if (!seen_shards.insert(sh.index).second)
+      throw ccd::InputError(which, "shard.index", "shard " + std::to_string(sh.index) + " given twice");
     for (const json& rec : r["records"]) {
-      const std::size_t job = rec["job"].get<std::size_t>();
-      if (!by_job.emplace(job, rec).second) throw std::runtime_error(which + ": job " + std::to_string(job) + " twice");
+      const auto job = rec["job"].get<std::size_t>();
+      if (!by_job.emplace(job, rec).second)
+        throw ccd::InputError(which, "records", "job " + std::to_string(job) + " twice");
     }
+    peak = std::max(peak, r["peak_memory_bytes"].get<long long>());
   }
-  if (by_job.size() != total)
-    throw std::runtime_error("merged " + std::to_string(by_job.size()) + " of " + std::to_string(total) +
+  if (by_job.size() != head.jobs)
+    throw std::runtime_error("merged " + std::to_string(by_job.size()) + " of " + std::to_string(head.jobs) +
                              " jobs: a shard is missing");
   json out = first;
-  out["shard"] = {{"index", 1}, {"count", 1}, {"jobs", total}, {"merged_from", shards.size()}};
+  out["shard"] = {{"index", 1}, {"count", 1}, {"jobs", head.jobs}, {"merged_from", shards.size()}};
   json recs = json::array();
-  long long peak = 0;
-  for (const json& r : shards) peak = std::max(peak, r["peak_memory_bytes"].get<long long>());
   for (auto& [job, rec] : by_job) recs.push_back(rec);
   out["records"] = std::move(recs);
   out["peak_memory_bytes"] = peak;

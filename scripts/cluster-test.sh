@@ -225,20 +225,18 @@ while queued=$(timeout 10 squeue -h -j "$ids" -o '%i %r' 2>/dev/null || echo "? 
 done
 states=$(for id in ${ids//,/ }; do scontrol -o show job "$id"; done | grep -o 'JobState=[A-Z_]* .*ExitCode=[0-9:]*' |
   sed 's/JobState=\([A-Z_]*\).*ExitCode=\([0-9:]*\)/\1 \2/' | sort | uniq -c | awk '{printf "%s%s x%d (exit %s)", (NR > 1 ? ", " : ""), $2, $1, $3}')
-expected=$(( shards + ${#job[@]} - 1 ))
+expected=$((shards + 2))  # the truth job, the shard tasks, the merge job
 [[ $states == "COMPLETED x$expected (exit 0:0)" ]] ||
   abort "slurm: jobs ended as: $states (expected COMPLETED x$expected (exit 0:0))"
 pass "slurm: ${#job[@]} jobs, $expected tasks COMPLETED with exit 0 in $(elapsed $t) s"
 
 merged=$tmp/slurm/default.json
 [[ -f $merged ]] || abort "slurm: no merged results at $merged"
-if [[ -n ${job[truth]:-} ]]; then
-  sources=$(truth_sources "$tmp"/slurm/shards/*.json)
-  if [[ $sources == "$tmp/slurm/truth.json" ]]; then
-    pass "slurm: all $shards shards read the one truth file (truth.source)"
-  else
-    fail "slurm: shards took their truth from: $sources (expected $tmp/slurm/truth.json)"
-  fi
+sources=$(truth_sources "$tmp"/slurm/shards/*.json)
+if [[ $sources == "$tmp/slurm/truth.json" ]]; then
+  pass "slurm: all $shards shards read the one truth file (truth.source)"
+else
+  fail "slurm: shards took their truth from: $sources (expected $tmp/slurm/truth.json)"
 fi
 if out=$(python3 "$root/scripts/compare-results.py" "$tmp/single.json" "$merged"); then
   pass "slurm: merged $shards shards = the single-machine run ($out)"
@@ -266,7 +264,7 @@ for n in 1 2 3 5 8 12 13; do
   order=$(tail -n +2 "$tmp/parallel-$n/joblog.txt" | grep -o -- '--shard [0-9]*' | cut -d' ' -f2 | tr '\n' ' ')
   what="parallel: $n shard(s) finished in the order ${order% } ($(elapsed $t) s)"
   sources=$(truth_sources "$tmp/parallel-$n"/shards/*.json)
-  if [[ -f $tmp/parallel-$n/truth.json && $sources != "$tmp/parallel-$n/truth.json" ]]; then
+  if [[ $sources != "$tmp/parallel-$n/truth.json" ]]; then
     fail "$what: the shards took their truth from $sources, not the one truth file"
   elif out=$(python3 "$root/scripts/compare-results.py" "$tmp/small-single.json" "$tmp/parallel-$n/small.json"); then
     pass "$what: merged = single run ($out)"

@@ -59,23 +59,15 @@ fi
 mkdir -p "$out/shards"
 out=$(realpath "$out")
 
-# The shared truth needs `ccdlab run --truth`; a ccdlab without it makes every shard
-# compute the truth itself (same counts, more CPU time).
-truth=()
-if "$ccdlab" run --help | grep -q -- --truth; then
-  if [[ $kind == generator ]]; then
-    # shellcheck disable=SC2086  # the generator's arguments, one word each
-    "$ccdlab" scene $scene -o "$out/scene.json" >/dev/null
-    scene=$out/scene.json
-  fi
-  "$ccdlab" truth "$scene" --threads "$(nproc)" --quiet -o "$out/truth.json"
-  truth=(--truth "$out/truth.json")
-else
-  echo "parallel-run.sh: note: $ccdlab run has no --truth: every shard computes the ground truth itself" >&2
+if [[ $kind == generator ]]; then
+  # shellcheck disable=SC2086  # the generator's arguments, one word each
+  "$ccdlab" scene $scene -o "$out/scene.json" >/dev/null
+  scene=$out/scene.json
 fi
+"$ccdlab" truth "$scene" --threads "$(nproc)" --quiet -o "$out/truth.json"
 
 parallel --will-cite --shuf --jobs "$jobs" --halt now,fail=1 --joblog "$out/joblog.txt" "${parallel_options[@]}" -q \
-  "$ccdlab" run "$experiment" --shard "{}/$shards" --threads "$threads" --quiet "${truth[@]}" \
+  "$ccdlab" run "$experiment" --shard "{}/$shards" --threads "$threads" --quiet --truth "$out/truth.json" \
   -o "$out/shards/$name.shard{}of$shards.json" ::: $(seq 1 "$shards") >/dev/null
 
 mapfile -t files < <(for ((k = 1; k <= shards; k++)); do echo "$out/shards/$name.shard${k}of$shards.json"; done | shuf)

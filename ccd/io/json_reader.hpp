@@ -27,6 +27,16 @@ struct JsonReader {
   Vec3 optional_vec3(const nlohmann::json& obj, const char* key, const std::string& path) const;
   /// A non-negative integer that fits a 32-bit body index.
   std::uint32_t index(const nlohmann::json& v, const std::string& field) const;
+  /// An integer in [lo, hi] ("must be an integer in [lo, hi]").
+  long long integer(const nlohmann::json& v, const std::string& field, long long lo, long long hi) const;
+  /// A string.
+  std::string string(const nlohmann::json& v, const std::string& field) const;
+  /// A boolean.
+  bool boolean(const nlohmann::json& v, const std::string& field) const;
+  /// obj[key] as a finite number, or `fallback` when absent.
+  double optional_number(const nlohmann::json& obj, const char* key, const std::string& path, double fallback) const;
+  /// obj[key] as a boolean, or `fallback` when absent.
+  bool optional_bool(const nlohmann::json& obj, const char* key, const std::string& path, bool fallback) const;
 };
 
 }  // namespace ccd

@@ -33,7 +33,7 @@ int run_merge(std::span<const std::string> args) {
   try {
     std::vector<nlohmann::json> shards;
     for (const std::string& f : inputs) shards.push_back(ccd::read_json_file(f));
-    ccd::write_file_atomically(out, merge_results(shards).dump(1) + "\n");
+    ccd::write_file_atomically(out, merge_results(shards, inputs).dump(1) + "\n");
   } catch (const std::exception& e) {
     std::cerr << "ccdlab merge: " << e.what() << "\n";
     return kExitBadInput;

@@ -1,16 +1,18 @@
-// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--quiet]`
+// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]`
 #include "command.hpp"
 
 #include "../run_experiment.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
+#include <ccd/util/parallel_for.hpp>
 
 #include <atomic>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
-#include <thread>
 #include <unistd.h>
 
 namespace ccdlab {
@@ -25,16 +27,11 @@ extern "C" void on_signal(int) {
   }
 }
 
+// A flag's integer in [1, 4096] (ccd/util/integer_text.hpp).
 bool parse_int(const std::string& s, int& out) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(s, &used);
-    if (used != s.size() || v < 1 || v > 4096) return false;
-    out = static_cast<int>(v);
-    return true;
-  } catch (...) {
-    return false;
-  }
+  const auto v = ccd::parse_integer(s, 1, 4096);
+  if (v) out = static_cast<int>(*v);
+  return v.has_value();
 }
 
 int run_run(std::span<const std::string> args) {
@@ -42,9 +39,9 @@ int run_run(std::span<const std::string> args) {
     std::cerr << "ccdlab run: " << msg << " (see ccdlab run --help)\n";
     return kExitBadInput;
   };
-  std::string experiment_path, out_path;
+  std::string experiment_path, out_path, truth_path;
   RunOptions options;
-  options.threads = std::max(1u, std::thread::hardware_concurrency());
+  options.threads = static_cast<int>(ccd::resolve_threads(0));
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> const std::string* {
@@ -65,6 +62,10 @@ int run_run(std::span<const std::string> args) {
       if (!v || slash == std::string::npos || !parse_int(v->substr(0, slash), options.shard.index) ||
           !parse_int(v->substr(slash + 1), options.shard.count) || options.shard.index > options.shard.count)
         return usage_error("--shard needs K/N with 1 <= K <= N");
+    } else if (a == "--truth") {
+      const std::string* v = value("--truth");
+      if (!v) return usage_error("--truth needs a truth file (ccdlab truth SCENE.json -o FILE)");
+      truth_path = *v;
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
     } else if (!a.empty() && a[0] == '-') {
@@ -79,10 +80,19 @@ int run_run(std::span<const std::string> args) {
 
   Experiment e;
   ccd::Scene scene;
+  ccd::TruthFile stored_truth;
   try {
     e = load_experiment(experiment_path);
     scene = load_experiment_scene(e, experiment_path);
     check_dt_against_horizon(e, scene.horizon, experiment_path);
+    if (!truth_path.empty()) {
+      stored_truth = ccd::load_truth(truth_path);
+      if (!check_stored_truth(stored_truth, scene, truth_path) && !options.quiet)
+        std::cerr << "ccdlab run: note: " << truth_path << " is " << ccd::kTruthFormatV1
+                  << " (no scene digest): only its horizon and body indices were checked\n";
+      options.truth = &stored_truth;
+      options.truth_file = truth_path;
+    }
   } catch (const ccd::InputError& err) {
     std::cerr << "ccdlab run: " << err.what() << "\n";
     return kExitBadInput;
@@ -138,10 +148,10 @@ int run_run(std::span<const std::string> args) {
 
 extern const Command kRunCommand = {
     "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
-    "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--quiet]\n"
+    "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
-    "ground truth and writes a ccdlab-results/1 file (docs/experiments.md).\n"
+    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md).\n"
     "\n"
     "  -o, --output FILE  results file (default results/NAME.json); written atomically,\n"
     "                     never partially (Ctrl-C leaves no file)\n"
@@ -149,6 +159,10 @@ extern const Command kRunCommand = {
     "                     (default: all cores); counts do not depend on N\n"
     "  --shard K/N        run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
     "                     systems; join the shard files with `ccdlab merge`\n"
+    "  --truth FILE       reuse the ground truth in FILE (`ccdlab truth SCENE.json -o FILE`)\n"
+    "                     instead of computing it; FILE's scene digest must be this scene's\n"
+    "                     (else exit 2); a ccdlab-truth/1 file is checked only for its\n"
+    "                     horizon and body indices\n"
     "  -q, --quiet        no progress on stderr\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",

@@ -1,12 +1,14 @@
 // `ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet]`:
-// exact contact intervals of every pair (ground truth, format ccdlab-truth/1).
+// exact contact intervals of every pair (ground truth, format ccdlab-truth/2).
 #include "command.hpp"
 
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -23,7 +25,7 @@ constexpr const char* kUsage =
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md).\n"
     "\n"
-    "  -o OUT.json   write the intervals as ccdlab-truth/1 (atomically; '-' = stdout)\n"
+    "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout)\n"
     "  --threads N   worker threads (default: one per core); the result does not depend on it\n"
     "  --windows N   time windows of the space-time broad phase (default: automatic)\n"
     "  --quiet       print no summary\n"
@@ -34,11 +36,6 @@ constexpr const char* kUsage =
 int usage_error(const std::string& what) {
   std::cerr << "ccdlab truth: " << what << " (see ccdlab truth --help)\n";
   return kExitBadInput;
-}
-
-std::optional<unsigned long> parse_count(const std::string& s) {
-  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) return std::nullopt;
-  return std::stoul(s);
 }
 
 int run_truth(std::span<const std::string> args) {
@@ -53,8 +50,8 @@ int run_truth(std::span<const std::string> args) {
       if (a == "-o" || a == "--output") {
         out_path = v;
       } else {
-        const auto n = parse_count(v);
-        if (!n || *n == 0) return usage_error(a + " needs a positive integer, got '" + v + "'");
+        const auto n = ccd::parse_integer(v, 1, 999999999);
+        if (!n) return usage_error(a + " needs a positive integer, got '" + v + "'");
         if (a == "--threads") options.threads = static_cast<unsigned>(*n);
         else options.windows = *n;
       }
@@ -78,7 +75,13 @@ int run_truth(std::span<const std::string> args) {
     const ccd::TruthResult result = ccd::compute_truth_detailed(traj, options);
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    if (!out_path.empty()) ccd::save_truth({scene.horizon, result.events}, out_path);
+    if (!out_path.empty()) {
+      ccd::TruthFile file;
+      file.horizon = scene.horizon;
+      file.events = result.events;
+      file.scene_sha256 = ccd::scene_digest(scene);
+      ccd::save_truth(file, out_path);
+    }
     if (quiet || out_path == "-") return 0;
     std::size_t tangent = 0;
     for (const ccd::ContactEvent& e : result.events) tangent += e.enter == e.exit;

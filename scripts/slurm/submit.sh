@@ -71,7 +71,8 @@ fi' EXIT
 
 # What the job scripts read (sbatch passes the submitting environment on by default).
 export CCDLAB=$ccdlab CCDLAB_EXPERIMENT=$experiment CCDLAB_NAME=$name CCDLAB_SHARDS=$shards
-export CCDLAB_RUN_DIR=$out CCDLAB_MODULES=$modules CCDLAB_SCENE="" CCDLAB_SCENE_GENERATOR="" CCDLAB_TRUTH=""
+export CCDLAB_RUN_DIR=$out CCDLAB_MODULES=$modules CCDLAB_SCENE="" CCDLAB_SCENE_GENERATOR=""
+export CCDLAB_TRUTH=$out/truth.json
 if [[ $kind == file ]]; then CCDLAB_SCENE=$scene; else CCDLAB_SCENE_GENERATOR=$scene; fi
 
 submit() {  # submit VAR SBATCH_ARGS...: sets VAR to the job id
@@ -83,19 +84,9 @@ submit() {  # submit VAR SBATCH_ARGS...: sets VAR to the job id
   printf -v "$var" %s "$id"
 }
 
-# The shared truth needs `ccdlab run --truth`; a ccdlab without it makes every shard
-# compute the truth itself (same counts, more CPU time), and no truth job is submitted.
-shard_after=()
-if "$ccdlab" run --help | grep -q -- --truth; then
-  CCDLAB_TRUTH=$out/truth.json
-  submit truth_job --cpus-per-task="$threads" --output="$out/logs/truth-%j.out" "$here/truth.sbatch"
-  echo "truth $truth_job" >"$out/jobs.txt"
-  shard_after=(--dependency="afterok:$truth_job")
-else
-  echo "submit.sh: note: $ccdlab run has no --truth: every shard computes the ground truth itself" >&2
-  : >"$out/jobs.txt"
-fi
-submit shard_job --cpus-per-task="$threads" --array="1-$shards" "${shard_after[@]}" \
+submit truth_job --cpus-per-task="$threads" --output="$out/logs/truth-%j.out" "$here/truth.sbatch"
+echo "truth $truth_job" >"$out/jobs.txt"
+submit shard_job --cpus-per-task="$threads" --array="1-$shards" --dependency="afterok:$truth_job" \
   --output="$out/logs/shard-%a-%A.out" "$here/shard.sbatch"
 echo "shards $shard_job" >>"$out/jobs.txt"
 submit merge_job --cpus-per-task=1 --dependency="afterok:$shard_job" --output="$out/logs/merge-%j.out" \
