@@ -65,17 +65,28 @@ TEST_CASE("shards merged in any order equal the whole run, for any shard count",
       for (const json& r : shards.back()["records"]) CHECK(r["job"].get<int>() % n == k - 1);
     }
     CHECK(records == jobs);  // every job in exactly one shard; with n > jobs some are empty
-    for (int order = 0; order < 3; ++order) {
-      CAPTURE(order);
-      if (order == 1) std::reverse(shards.begin(), shards.end());
-      if (order == 2) std::shuffle(shards.begin(), shards.end(), rng);
-      const json merged = ccdlab::merge_results(shards);
+    std::vector<std::string> names;
+    for (int k = 1; k <= n; ++k) names.push_back("shard" + std::to_string(k) + ".json");
+    std::vector<std::size_t> order(static_cast<std::size_t>(n));
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    for (int permutation = 0; permutation < 3; ++permutation) {
+      CAPTURE(permutation);
+      if (permutation == 1) std::reverse(order.begin(), order.end());
+      if (permutation == 2) std::shuffle(order.begin(), order.end(), rng);
+      std::vector<json> given;
+      std::vector<std::string> files;
+      for (const std::size_t i : order) {
+        given.push_back(shards[i]);
+        files.push_back(names[i]);
+      }
+      const json merged = ccdlab::merge_results(given, files);
       CHECK(merged["shard"]["merged_from"] == n);
       CHECK(comparable(merged) == comparable(whole));
-    }
-    if (n > 1 && n <= static_cast<int>(jobs)) {  // a missing shard is an error, whichever it is
-      std::vector<json> missing(shards.begin(), shards.end() - 1);
-      CHECK_THROWS(ccdlab::merge_results(missing));
+      if (n > 1 && n <= static_cast<int>(jobs)) {  // a missing shard is an error, whichever it is
+        given.pop_back();
+        files.pop_back();
+        CHECK_THROWS(ccdlab::merge_results(given, files));
+      }
     }
   }
 }
