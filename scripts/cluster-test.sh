@@ -18,7 +18,7 @@
 #   6. stops every daemon it started by process id, and any process they left (found by
 #      a marker in their environment), also when a step fails or on Ctrl-C
 # Prints one line per check; exits 0 when all pass, 1 otherwise. Run as root (slurmd
-# starts the jobs). About 2 to 3 minutes on a 2-core machine, most of it the two runs of
+# starts the jobs). About 2 to 2.5 minutes on a 2-core machine, most of it the two runs of
 # the default experiment. Set CCDLAB_CLUSTER_KEEP=1 to keep the temporary directory.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
