@@ -6,6 +6,7 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -78,8 +79,21 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
   if (j.contains("name")) {
     if (!j["name"].is_string()) fail(file, "name", "must be a string");
     e.name = j["name"].get<std::string>();
+    // The name becomes a file name (results/NAME.json): never a path.
+    if (e.name.empty() || e.name.size() > 200 || e.name.front() == '.' || e.name.front() == '-' ||
+        !std::all_of(e.name.begin(), e.name.end(), [](char c) {
+          return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+        }))
+      fail(file, "name",
+           "'" + e.name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not starting "
+           "with '.' or '-' (the default results file is results/NAME.json)");
   } else {
-    e.name = std::filesystem::path(file).stem().string();
+    // The file's stem, with anything but letters, digits, '.', '_' and '-' made '_'.
+    e.name = std::filesystem::path(file).stem().string().substr(0, 200);
+    for (char& c : e.name)
+      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) c = '_';
+    if (e.name.empty()) e.name = "experiment";
+    if (e.name.front() == '.' || e.name.front() == '-') e.name.front() = '_';
   }
   if (!j.contains("scene")) fail(file, "scene", "missing required field");
   const json& scene = j["scene"];
@@ -106,13 +120,18 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
     } catch (const std::invalid_argument& err) {
       fail(file, field, err.what());
     }
-    if (std::count(e.methods.begin(), e.methods.end(), e.methods.back()) > 1)
-      fail(file, field, "method '" + e.methods.back() + "' is listed twice");
+    // Compared by canonical name: "horn/grid", "horn:4/grid" and "horn:04/grid" are one method.
+    const auto first = std::find(e.methods.begin(), e.methods.end(), e.methods.back());
+    if (first != e.methods.end() - 1)
+      fail(file, field,
+           "method '" + methods[i].get<std::string>() + "' is '" + e.methods.back() + "', already listed as methods[" +
+               std::to_string(first - e.methods.begin()) + "]");
   }
   if (j.contains("acceleration_bound") && !j["acceleration_bound"].is_null()) {
     const json& a = j["acceleration_bound"];
-    if (!a.is_number() || !std::isfinite(a.get<double>()) || a.get<double>() < 0.0)
-      fail(file, "acceleration_bound", "must be a finite number >= 0");
+    if (!a.is_number() || !std::isfinite(a.get<double>()) || a.get<double>() < 0.0 ||
+        a.get<double>() > ccd::kMaxSceneMagnitude)
+      fail(file, "acceleration_bound", "must be a number in [0, 1e+30]");
     e.acceleration_bound = a.get<double>();
   }
   if (j.contains("repeats")) {
@@ -135,10 +154,33 @@ Experiment load_experiment(const std::string& path) {
 }
 
 void check_dt_against_horizon(const Experiment& e, double horizon, const std::string& file) {
-  for (std::size_t i = 0; i < e.dt.size(); ++i)
+  auto text = [](double x) { return json(x).dump(); };
+  for (std::size_t i = 0; i < e.dt.size(); ++i) {
     if (e.dt[i] > horizon)
-      fail(file, "dt", "timestep " + std::to_string(e.dt[i]) + " is larger than the scene's horizon " +
-                           std::to_string(horizon));
+      fail(file, "dt", "timestep " + text(e.dt[i]) + " is larger than the scene's horizon " + text(horizon));
+    if (horizon / e.dt[i] > kMaxStepsPerJob)
+      fail(file, "dt",
+           "timestep " + text(e.dt[i]) + " is below what the horizon " + text(horizon) +
+               " can resolve: more than 2^52 steps, where consecutive sample times k dt are no longer distinct "
+               "(smallest dt: horizon * 2^-52 = " + text(horizon * 0x1p-52) + ")");
+  }
+}
+
+double steps_per_job(double horizon, double dt) {
+  // As the runner counts them: samples k = 0 .. floor(T / dt), or the steps between them
+  // plus the last partial one: at most floor(T / dt) + 1 either way.
+  return std::floor(horizon / dt) + 1.0;
+}
+
+double experiment_work(const Experiment& e, std::size_t bodies, double horizon, int shard_index, int shard_count) {
+  double work = 0.0;
+  for (std::size_t m = 0; m < e.methods.size(); ++m)
+    for (std::size_t d = 0; d < e.dt.size(); ++d) {
+      const std::size_t job = m * e.dt.size() + d;
+      if (static_cast<int>(job % static_cast<std::size_t>(shard_count)) != shard_index - 1) continue;
+      work += steps_per_job(horizon, e.dt[d]) * static_cast<double>(bodies) * e.repeats;
+    }
+  return work;
 }
 
 json experiment_to_json(const Experiment& e) {

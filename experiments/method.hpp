@@ -12,7 +12,9 @@
 namespace ccdlab {
 
 struct MethodSpec {
-  std::string name;   ///< canonical "BOUND/BROADPHASE" (":M" kept as given)
+  std::string name;   ///< canonical "BOUND/BROADPHASE": ":M" always written for parameterised
+                      ///< bounds, in decimal without leading zeros ("horn/grid", "horn:04/grid"
+                      ///< -> "horn:4/grid"), so one method has one name
   ccd::BoundSpec bound;
   const ccd::BroadPhaseInfo* broad_phase = nullptr;
   bool continuous() const { return bound.info->knowledge != ccd::Knowledge::Instant; }

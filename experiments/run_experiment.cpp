@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -53,7 +52,8 @@ json scene_summary(const Experiment& e, const ccd::Scene& s, const ccd::Trajecto
             {"radius_min", rmin},
             {"radius_max", rmax},
             {"max_acceleration", s.max_acceleration()},
-            {"trajectory_pieces", traj.total_pieces()}};
+            {"trajectory_pieces", traj.total_pieces()},
+            {"digest", ccd::scene_digest(s)}};
   if (s.box)
     j["box"] = {{"min", {s.box->min.x(), s.box->min.y(), s.box->min.z()}},
                 {"max", {s.box->max.x(), s.box->max.y(), s.box->max.z()}}};
@@ -146,44 +146,6 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   }
   out["records"] = std::move(recs);
   out["peak_memory_bytes"] = peak_memory_bytes();
-  return out;
-}
-
-json merge_results(const std::vector<json>& shards) {
-  if (shards.empty()) throw std::runtime_error("no results to merge");
-  const json& first = shards.front();
-  std::map<std::size_t, json> by_job;
-  std::set<int> seen_shards;
-  const std::size_t total = first["shard"]["jobs"].get<std::size_t>();
-  for (std::size_t s = 0; s < shards.size(); ++s) {
-    const json& r = shards[s];
-    const std::string which = "input " + std::to_string(s + 1);
-    if (r.value("format", "") != "ccdlab-results/1") throw std::runtime_error(which + ": not a ccdlab-results/1 file");
-    if (r["experiment"] != first["experiment"])
-      throw std::runtime_error(which + ": a different experiment than input 1");
-    if (r["truth"]["events"] != first["truth"]["events"] || r["scene"]["bodies"] != first["scene"]["bodies"])
-      throw std::runtime_error(which + ": a different scene or ground truth than input 1");
-    if (r["shard"]["count"] != first["shard"]["count"])
-      throw std::runtime_error(which + ": sharded " + r["shard"]["count"].dump() + " ways, input 1 " +
-                               first["shard"]["count"].dump() + " ways");
-    if (!seen_shards.insert(r["shard"]["index"].get<int>()).second)
-      throw std::runtime_error(which + ": shard " + r["shard"]["index"].dump() + " given twice");
-    for (const json& rec : r["records"]) {
-      const std::size_t job = rec["job"].get<std::size_t>();
-      if (!by_job.emplace(job, rec).second) throw std::runtime_error(which + ": job " + std::to_string(job) + " twice");
-    }
-  }
-  if (by_job.size() != total)
-    throw std::runtime_error("merged " + std::to_string(by_job.size()) + " of " + std::to_string(total) +
-                             " jobs: a shard is missing");
-  json out = first;
-  out["shard"] = {{"index", 1}, {"count", 1}, {"jobs", total}, {"merged_from", shards.size()}};
-  json recs = json::array();
-  long long peak = 0;
-  for (const json& r : shards) peak = std::max(peak, r["peak_memory_bytes"].get<long long>());
-  for (auto& [job, rec] : by_job) recs.push_back(rec);
-  out["records"] = std::move(recs);
-  out["peak_memory_bytes"] = peak;
   return out;
 }
 

@@ -32,8 +32,4 @@ ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file);
 /// Runs the experiment. Returns a null JSON value if cancelled.
 nlohmann::json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options);
 
-/// Joins shard results of one experiment (ccdlab merge). Throws std::runtime_error when
-/// they are of different experiments, overlap, or a shard is missing.
-nlohmann::json merge_results(const std::vector<nlohmann::json>& shards);
-
 }  // namespace ccdlab

@@ -107,9 +107,7 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
       if (wall_axis < 0) piece.t1 = t_change;  // exact break time, no rounding drift
       pieces_.push_back(piece);
       if (pieces_.size() - start > options.max_pieces_per_body)
-        throw std::runtime_error("body " + std::to_string(i) + " needs more than " +
-                                 std::to_string(options.max_pieces_per_body) +
-                                 " trajectory pieces (wall reflections) over the horizon");
+        throw TooManyPieces(i, options.max_pieces_per_body);
       const double t_next = piece.t1;
       p = piece.position(t_next);
       v = piece.velocity(t_next);
