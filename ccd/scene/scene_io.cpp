@@ -6,6 +6,7 @@
 #include <ccd/scene/input_error.hpp>
 
 #include <cmath>
+#include <cstdio>
 
 namespace ccd {
 namespace {
@@ -91,8 +92,11 @@ void validate_scene(const Scene& s, const std::string& file) {
   // acceleration it takes), each within the limit, so that every position, distance and
   // solver coefficient stays far from overflow.
   auto reach = [&](double travelled, const std::string& f, const char* what) {
-    if (!(travelled <= kMaxSceneMagnitude))
-      r.fail(f, std::string(what) + " is " + json(travelled).dump() + " m, above the limit " + limit + " m");
+    if (!(travelled <= kMaxSceneMagnitude)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", travelled);
+      r.fail(f, std::string(what) + " is " + text + " m, above the limit " + limit + " m");
+    }
   };
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];

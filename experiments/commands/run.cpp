@@ -106,9 +106,6 @@ int run_run(std::span<const std::string> args) {
                                 " bodies, up to " + number(most_steps) + " steps per job at dt = " +
                                 number(e.dt.back()) + "), above the limit " + number(kMaxWorkWithoutForce) +
                                 " without --force");
-    if (!options.quiet)
-      std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
-                << number(most_steps) << " steps per job)\n";
 
     if (out_path.empty()) {
       out_path = "results/" + e.name +
@@ -119,6 +116,9 @@ int run_run(std::span<const std::string> args) {
     }
     const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path};
     ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
+    if (!options.quiet)
+      std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
+                << number(most_steps) << " steps per job)\n";
 
     options.cancel = &g_cancel;
     std::signal(SIGINT, on_signal);
