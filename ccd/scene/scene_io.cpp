@@ -113,6 +113,12 @@ void validate_scene(const Scene& s, const std::string& file) {
       for (int a = 0; a < 3; ++a) {
         if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])
           r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
+        // A body as wide as the box on an axis touches both walls at once: it cannot move
+        // along that axis (it would reflect at both walls in zero time and leave the box).
+        const double lo = s.box->min[a] + b.radius, hi = s.box->max[a] - b.radius;  // as the trajectory
+        if (!(lo < hi) && b.velocity[a] != 0.0)
+          r.fail(p + ".velocity[" + std::to_string(a) + "]",
+                 "must be 0: the body fills the box on this axis (no room to move between the walls)");
       }
     }
     double prev = 0.0;

@@ -112,6 +112,21 @@ TEST_CASE("magnitudes whose products overflow are rejected with the field and th
     CHECK(g.status == 2);
     CHECK(g.err.find("bodies[0].acceleration: |acceleration + gravity| * horizon^2 / 2") != std::string::npos);
   }
+  SECTION("a body as wide as the box, moving across it: once it left the box at t = 0 (found by fuzz_scene)") {
+    json s = two_bodies(0.0);
+    s["box"] = {{"min", {-1, -1, -1}}, {"max", {6, 0.5, 1}}};
+    s["bodies"][1]["position"] = {5, -0.25, 0};
+    s["bodies"][1]["radius"] = 0.75;  // y in [-1, 0.5]: no room on axis 1
+    s["bodies"][1]["velocity"] = {0, 7, 0};
+    const std::string file = dir.write("s.json", s);
+    const Run r = ccdlab(dir, "truth " + file + " -o " + out);
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab truth: " + file +
+                       ": bodies[1].velocity[1]: must be 0: the body fills the box on this axis (no room to move "
+                       "between the walls)\n");
+    s["bodies"][1]["velocity"] = {-3, 0, 0};  // along an axis with room it moves and bounces
+    CHECK(ccdlab(dir, "truth " + dir.write("s.json", s)).status == 0);
+  }
   SECTION("an acceleration bound of 1e308 for the horn bounds") {
     json e = experiment(dir.write("s.json", two_bodies()), {"horn:4/grid"});
     e["acceleration_bound"] = 1e308;
