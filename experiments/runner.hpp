@@ -1,7 +1,8 @@
 #pragma once
 // Runs one method at one timestep over a scene and measures it against exact ground
 // truth (definitions in docs/experiments.md):
-//  - samples t_k = k * dt (a product, never accumulated), k = 0 .. floor(T / dt);
+//  - samples t_k = k * dt (the product in double, never accumulated), every k >= 0 with
+//    t_k <= T (sample_count);
 //  - a discrete method (an Instant bound) checks overlap at each sample: an event is
 //    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
 //  - a continuous method checks each step [t_k, t_{k+1}] (and the last partial step): an
@@ -38,9 +39,10 @@ struct RunRecord {
   bool conservative = false;   ///< the bound's claim under its knowledge
   double dt = 0.0;
   std::uint64_t steps = 0;     ///< samples (discrete) or steps (continuous)
-  std::uint64_t events = 0;    ///< ground-truth events
-  std::uint64_t detected = 0;
-  std::uint64_t missed = 0;
+  std::uint64_t events = 0;    ///< ground-truth events, all of them
+  std::uint64_t initial_contacts = 0;  ///< of those, events in progress at t = 0 (enter == 0)
+  std::uint64_t detected = 0;  ///< of the other events, those detected
+  std::uint64_t missed = 0;    ///< of the other events, those missed
   std::uint64_t candidates = 0;        ///< pairs reported by the broad phase, summed over steps
   std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
   std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
@@ -63,6 +65,10 @@ struct RunRecord {
   bool counts_stable = true;           ///< identical counts over all repeats
   bool cancelled = false;
 };
+
+/// Number of samples t_k = k * dt (the double product) with t_k <= horizon: K + 1 where
+/// K is the largest k with k * dt <= horizon. 0 when dt is not positive and finite.
+std::uint64_t sample_count(double horizon, double dt);
 
 /// Runs `method` at timestep `dt`. Never throws for a valid input; a cancelled run
 /// returns with `cancelled` set.

@@ -11,10 +11,10 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// First s in (0, limit] with x + v s + a s^2/2 == wall while moving towards the wall
-// (dir = +1: the wall is above, the velocity at s must be > 0; dir = -1: below).
-double first_wall_hit(double x, double v, double a, double wall, int dir, double limit) {
-  const double c = x - wall;  // a/2 s^2 + v s + c = 0
+// First s in (0, limit] with c + v s + a s^2/2 == 0 (c = x - wall, formed exactly by the
+// caller) while moving towards the wall (dir = +1: the wall is above, the velocity at s
+// must be > 0; dir = -1: below).
+double first_wall_hit(double c, double v, double a, int dir, double limit) {
   double roots[2];
   int n = 0;
   if (a == 0.0) {
@@ -61,84 +61,172 @@ Aabb Piece::centre_bounds(double u0, double u1) const {
   return box;
 }
 
+DdVec3 exact_position(const Piece& q, const PieceLow& low, double t) {
+  const Dd s = two_sum(t, -q.t0);
+  const Dd half_s2 = (s * s) * 0.5;
+  DdVec3 r;
+  for (int k = 0; k < 3; ++k)
+    r[k] = Dd(q.p[k], low.p[k]) + Dd(q.v[k], low.v[k]) * s + Dd(q.a[k], low.a[k]) * half_s2;
+  return r;
+}
+
+DdVec3 exact_velocity(const Piece& q, const PieceLow& low, double t) {
+  const Dd s = two_sum(t, -q.t0);
+  DdVec3 r;
+  for (int k = 0; k < 3; ++k) r[k] = Dd(q.v[k], low.v[k]) + Dd(q.a[k], low.a[k]) * s;
+  return r;
+}
+
+namespace {
+
+// Height (fraction of the box extent) below which a body pushed into a wall rests on it.
+constexpr double kRestFraction = 0x1p-30;
+
+// The body's exact state at the start of a piece.
+struct State {
+  double t = 0.0;
+  DdVec3 p, v, a;
+};
+
+// Exact time s* (relative to the state's t) at which coordinate k reaches `wall`, given
+// the double approximation s0 of it: one Newton step evaluated in double-double.
+Dd refine_wall_time(const State& st, int k, const Dd& wall, double s0) {
+  const Dd s(s0);
+  const Dd r = st.p[k] + st.v[k] * s + st.a[k] * ((s * s) * 0.5) - wall;
+  const double slope = (st.v[k] + st.a[k] * s).value();
+  if (slope == 0.0) return s;
+  return s - Dd(r.value() / slope);
+}
+
+}  // namespace
+
 Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
     : horizon_(scene.horizon) {
   const std::size_t n = scene.bodies.size();
   radius_.reserve(n);
   first_.reserve(n + 1);
   pieces_.reserve(n);
+  lows_.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Body& b = scene.bodies[i];
     radius_.push_back(b.radius);
     const std::size_t start = pieces_.size();
-    Vec3 p = b.position;
-    Vec3 v = b.velocity;
-    Vec3 own = b.acceleration;
+    // Wall planes min + r and max - r, exact.
+    DdVec3 lo_wall, hi_wall;
+    Vec3 rest_height = Vec3::Zero();
+    if (scene.box) {
+      for (int k = 0; k < 3; ++k) {
+        lo_wall[k] = two_sum(scene.box->min[k], b.radius);
+        hi_wall[k] = two_sum(scene.box->max[k], -b.radius);
+        rest_height[k] = kRestFraction * (scene.box->max[k] - scene.box->min[k]);
+      }
+    }
+    auto own_plus_gravity = [&](const Vec3& own) {
+      DdVec3 a;
+      for (int k = 0; k < 3; ++k) a[k] = two_sum(own[k], scene.gravity[k]);
+      return a;
+    };
+    State st{0.0, DdVec3(b.position), DdVec3(b.velocity), own_plus_gravity(b.acceleration)};
     std::size_t next_change = 0;
-    double t = 0.0;
+    double carried_window = 0.0, carried_error = 0.0;  // from the reflection that began this piece
     while (true) {
       const double t_change = next_change < b.acceleration_changes.size()
                                   ? b.acceleration_changes[next_change].t
                                   : horizon_;
-      Vec3 a = own + scene.gravity;
-      double s_end = t_change - t;
+      DdVec3 a = st.a;
       int wall_axis = -1;
       int wall_dir = 0;
+      double s_end = t_change - st.t;
       if (scene.box) {
         for (int k = 0; k < 3; ++k) {
-          const double lo = scene.box->min[k] + b.radius;
-          const double hi = scene.box->max[k] - b.radius;
-          // Resting contact: on the wall, not moving, pushed into it.
-          if ((p[k] <= lo && v[k] == 0.0 && a[k] < 0.0) || (p[k] >= hi && v[k] == 0.0 && a[k] > 0.0))
-            a[k] = 0.0;
-          // Starting on a wall while moving into it: reflect at once.
-          if ((p[k] <= lo && v[k] < 0.0) || (p[k] >= hi && v[k] > 0.0)) v[k] = -v[k];
+          const double ak = a[k].value();
+          const double vk = st.v[k].value();
+          // Resting rule: pushed into a wall and unable to rise more than rest_height.
+          for (int dir : {-1, +1}) {
+            const Dd& wall = dir < 0 ? lo_wall[k] : hi_wall[k];
+            if (!(dir * ak > 0.0)) continue;
+            const double h = -dir * (st.p[k] - wall).value();  // height above the plane
+            if (h + vk * vk / (2.0 * std::fabs(ak)) <= rest_height[k]) {
+              st.p[k] = wall;
+              st.v[k] = Dd(0.0);
+              a[k] = Dd(0.0);
+            }
+          }
+          // Starting on or beyond a wall plane while moving into it: reflect at once.
+          const double v_now = st.v[k].value();
+          if (((st.p[k] - lo_wall[k]).value() <= 0.0 && v_now < 0.0) ||
+              ((st.p[k] - hi_wall[k]).value() >= 0.0 && v_now > 0.0))
+            st.v[k] = -st.v[k];
         }
         for (int k = 0; k < 3; ++k) {
-          const double lo = scene.box->min[k] + b.radius;
-          const double hi = scene.box->max[k] - b.radius;
-          const double s_hi = first_wall_hit(p[k], v[k], a[k], hi, +1, s_end);
+          const double vk = st.v[k].value(), ak = a[k].value();
+          const double s_hi = first_wall_hit((st.p[k] - hi_wall[k]).value(), vk, ak, +1, s_end);
           if (s_hi < s_end) { s_end = s_hi; wall_axis = k; wall_dir = +1; }
-          const double s_lo = first_wall_hit(p[k], v[k], a[k], lo, -1, s_end);
+          const double s_lo = first_wall_hit((st.p[k] - lo_wall[k]).value(), vk, ak, -1, s_end);
           if (s_lo < s_end) { s_end = s_lo; wall_axis = k; wall_dir = -1; }
         }
       }
-      Piece piece{t, t + s_end, p, v, a};
-      if (wall_axis < 0) piece.t1 = t_change;  // exact break time, no rounding drift
+      State here = st;
+      here.a = a;
+      double t_next = t_change;
+      Dd t_star;  // exact reflection time (absolute)
+      if (wall_axis >= 0) {
+        const Dd& wall = wall_dir > 0 ? hi_wall[wall_axis] : lo_wall[wall_axis];
+        const Dd s_star = refine_wall_time(here, wall_axis, wall, s_end);
+        t_star = two_sum(st.t, s_star.hi) + Dd(s_star.lo);
+        t_next = t_star.value();
+        if (!(t_next > st.t)) t_next = std::nextafter(st.t, kInf);
+        if (t_next >= t_change) {  // the exact hit lies at or after the change: the change first
+          t_next = t_change;
+          wall_axis = -1;
+        }
+      }
+      Piece piece{st.t, t_next, here.p.hi(), here.v.hi(), here.a.hi()};
+      PieceLow low{here.p.lo(), here.v.lo(), here.a.lo(), carried_window, carried_error};
       pieces_.push_back(piece);
+      lows_.push_back(low);
       if (pieces_.size() - start > options.max_pieces_per_body)
         throw TooManyPieces(i, options.max_pieces_per_body);
-      const double t_next = piece.t1;
-      p = piece.position(t_next);
-      v = piece.velocity(t_next);
+      // The next piece starts from the body's own acceleration: the resting rule is checked afresh.
+      State next{t_next, exact_position(piece, low, t_next), exact_velocity(piece, low, t_next), st.a};
+      carried_window = 0.0;
+      carried_error = 0.0;
       if (wall_axis >= 0) {
-        p[wall_axis] = wall_dir > 0 ? scene.box->max[wall_axis] - b.radius
-                                    : scene.box->min[wall_axis] + b.radius;
-        v[wall_axis] = -v[wall_axis];
+        // The branch after the reflection, extrapolated from t* back to the double t_next.
+        const int k = wall_axis;
+        const Dd& wall = wall_dir > 0 ? hi_wall[k] : lo_wall[k];
+        const double delta = (Dd(t_next) - t_star).value();  // t_next - t*
+        const Dd v_out = -exact_velocity(piece, low, t_star.hi)[k] - a[k] * Dd(t_star.lo);
+        next.p[k] = wall + v_out * delta + a[k] * (0.5 * delta * delta);
+        next.v[k] = v_out + a[k] * delta;
+        if (delta != 0.0) {
+          carried_window = 2.0 * std::fabs(delta);
+          carried_error = 2.0 * std::fabs(v_out.value()) * std::fabs(delta) + std::fabs(a[k].value()) * delta * delta;
+          lows_.back().edge_window = std::max(lows_.back().edge_window, carried_window);
+          lows_.back().edge_error = std::max(lows_.back().edge_error, carried_error);
+        }
       } else if (next_change < b.acceleration_changes.size()) {
-        own = b.acceleration_changes[next_change].acceleration;
+        next.a = own_plus_gravity(b.acceleration_changes[next_change].acceleration);
         ++next_change;
       } else {
         break;  // reached the horizon
       }
-      if (scene.box) {  // keep the centre inside despite rounding
-        for (int k = 0; k < 3; ++k)
-          p[k] = std::clamp(p[k], scene.box->min[k] + b.radius, scene.box->max[k] - b.radius);
-      }
-      t = t_next;
-      if (t >= horizon_) break;
+      st = next;
+      if (st.t >= horizon_) break;
     }
     first_.push_back(static_cast<std::uint32_t>(pieces_.size()));
   }
 }
 
-const Piece& Trajectories::piece_at(std::size_t body, double t) const {
+std::size_t Trajectories::piece_index(std::size_t body, double t) const {
   const auto ps = pieces(body);
   // First piece whose end is > t; the last piece if none.
   auto it = std::upper_bound(ps.begin(), ps.end(), t, [](double x, const Piece& q) { return x < q.t1; });
   if (it == ps.end()) --it;
-  return *it;
+  return static_cast<std::size_t>(it - ps.begin());
 }
+
+const Piece& Trajectories::piece_at(std::size_t body, double t) const { return pieces(body)[piece_index(body, t)]; }
 
 Aabb Trajectories::swept_bounds(std::size_t body, double u0, double u1) const {
   const auto ps = pieces(body);

@@ -2,19 +2,31 @@
 // Exact piecewise-quadratic trajectories of a scene's bodies over [0, horizon].
 //
 // A piece covers [t0, t1] with p(t) = p + v s + a s^2 / 2, s = t - t0. Pieces end at
-// elastic wall reflections (solved exactly: the first s > 0 at which the centre reaches
-// min + r or max - r on some axis while moving towards that wall; the velocity
-// component flips and the position is set exactly on the wall) and at the body's
-// acceleration changes. A body touching a wall with zero normal velocity while its
-// acceleration pushes it into the wall rests on that wall: the wall supplies the
-// normal force, so that acceleration component is zero on the piece (the limit of
-// ever smaller elastic bounces).
+// elastic wall reflections and at the body's acceleration changes.
 //
-// Guarantee: consecutive pieces of a body are continuous in position (the next piece
-// starts at the previous piece's end point as evaluated, or exactly on the wall).
+// The model (docs/truth.md, "Motion model"):
+//  - A wall plane is the exact real number min + r (or max - r), not its rounding.
+//  - A reflection happens at the first s > 0 at which the centre reaches a wall plane
+//    while moving towards it; the normal velocity component flips (restitution 1).
+//  - A body that starts on or beyond a wall plane while moving into it reflects at once.
+//  - Resting rule: when a body's acceleration pushes it into a wall and the highest point
+//    it can reach above that wall plane, h + v_n^2 / (2 |a_n|), is at most
+//    rest_height = 2^-30 x (box extent on that axis), the body rests on the wall: on the
+//    piece its normal position is the plane, its normal velocity and acceleration zero
+//    (the wall supplies the normal force). This replaces ever faster micro-bounces (a
+//    soft landing, a body 1e-10 above the floor) by the state they converge to.
+//
+// Precision: every piece's start state (position, velocity, acceleration) is kept in
+// double-double (the Piece fields hold the leading doubles, PieceLow the trailing ones),
+// so breaks at acceleration changes and exactly representable reflections carry no
+// rounding of their own (about 1e-32 relative). Piece times are doubles: when a
+// reflection time is not a double, the piece boundary t_r is the nearest double, each
+// piece follows its exact branch (extrapolated by |t* - t_r|), and PieceLow records the
+// window |t* - t_r| and the position error 2 |v_n| |t* - t_r| inside it.
 // Limits: at most `max_pieces_per_body` pieces per body (a body that would need more
 // throws TooManyPieces naming it: a ball bouncing ever faster).
 #include <ccd/geometry/aabb.hpp>
+#include <ccd/geometry/double_double.hpp>
 #include <ccd/scene/scene.hpp>
 
 #include <cstdint>
@@ -56,6 +68,20 @@ class TooManyPieces : public std::runtime_error {
   std::size_t limit_;
 };
 
+/// The trailing parts of a piece's start state and the model's error at its ends.
+struct PieceLow {
+  Vec3 p{Vec3::Zero()};  ///< exact start position = Piece::p + p
+  Vec3 v{Vec3::Zero()};  ///< exact start velocity = Piece::v + v
+  Vec3 a{Vec3::Zero()};  ///< exact acceleration = Piece::a + a (own + gravity is not always a double)
+  double edge_window = 0.0;  ///< seconds: within this of either end the model may be off by
+  double edge_error = 0.0;   ///< metres: at most this (an inexact reflection time); 0 otherwise
+};
+
+/// Exact (double-double) position and velocity of piece q at time t (any double t; the
+/// offset t - q.t0 is formed exactly).
+DdVec3 exact_position(const Piece& q, const PieceLow& low, double t);
+DdVec3 exact_velocity(const Piece& q, const PieceLow& low, double t);
+
 struct TrajectoryOptions {
   static constexpr std::size_t default_max_pieces_per_body = 1000000;
   std::size_t max_pieces_per_body = default_max_pieces_per_body;
@@ -73,7 +99,13 @@ class Trajectories {
   std::span<const Piece> pieces(std::size_t body) const {
     return {pieces_.data() + first_[body], pieces_.data() + first_[body + 1]};
   }
+  /// Trailing parts of the pieces of `body`, index for index.
+  std::span<const PieceLow> lows(std::size_t body) const {
+    return {lows_.data() + first_[body], lows_.data() + first_[body + 1]};
+  }
   std::size_t total_pieces() const { return pieces_.size(); }
+  /// Index (into pieces(body)) of the piece that contains time t (the later one at a break).
+  std::size_t piece_index(std::size_t body, double t) const;
   /// The piece of `body` that contains time t (the later one at a break).
   const Piece& piece_at(std::size_t body, double t) const;
   Vec3 position(std::size_t body, double t) const { return piece_at(body, t).position(t); }
@@ -85,6 +117,7 @@ class Trajectories {
   double horizon_ = 0.0;
   std::vector<double> radius_;
   std::vector<Piece> pieces_;
+  std::vector<PieceLow> lows_;
   std::vector<std::uint32_t> first_{0};
 };
 

@@ -1,6 +1,6 @@
 #include <ccd/truth/pair_contact.hpp>
 
-#include <ccd/queries/sphere_sphere_contact.hpp>
+#include <ccd/truth/contact_function.hpp>
 
 #include <algorithm>
 #include <cassert>
@@ -8,10 +8,6 @@
 
 namespace ccd {
 namespace {
-
-MovingSphere sphere_at(const Piece& q, double t, double radius) {
-  return {q.position(t), q.velocity(t), q.a, radius};
-}
 
 // Calls visit(enter, exit) for every contact interval of the pair on each common piece
 // that overlaps [u0, u1], in time order, clipped to [u0, u1]. visit returns false to stop.
@@ -29,6 +25,18 @@ void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uin
   std::size_t ia = first_ending_after(pa);
   std::size_t ib = first_ending_after(pb);
   const double ra = traj.radius(a), rb = traj.radius(b);
+  const auto la = traj.lows(a);
+  const auto lb = traj.lows(b);
+  auto advance = [&] {
+    if (pa[ia].t1 < pb[ib].t1) {
+      ++ia;
+    } else if (pb[ib].t1 < pa[ia].t1) {
+      ++ib;
+    } else {
+      ++ia;
+      ++ib;
+    }
+  };
   while (ia < pa.size() && ib < pb.size()) {
     const Piece& qa = pa[ia];
     const Piece& qb = pb[ib];
@@ -36,27 +44,23 @@ void for_each_piece_interval(const Trajectories& traj, std::uint32_t a, std::uin
     const double c1 = std::min(qa.t1, qb.t1);
     if (c0 > u1) return;
     if (c1 >= c0 && c1 >= u0) {
-      const SublevelSet set =
-          sphere_sphere_contact_intervals(sphere_at(qa, c0, ra), sphere_at(qb, c0, rb), c1 - c0);
-      const double S = c1 - c0;
+      const PairMotion motion(qa, la[ia], ra, qb, lb[ib], rb);
+      // The cheap filter on the part of the piece inside the window first: the exact
+      // solve below always covers the whole piece (so that times do not depend on the
+      // window), which a runner step asking about a short window rarely needs.
+      const bool clipped = c0 < u0 || c1 > u1;
+      if (clipped && motion.certainly_apart(std::max(c0, u0), std::min(c1, u1))) {
+        advance();
+        continue;
+      }
+      const SublevelSet set = motion.contact_set(c0, c1);
       for (int k = 0; k < set.count; ++k) {
         const RootInterval& iv = set.intervals[k];
-        double enter = iv.lo <= 0.0 ? c0 : std::min(c0 + iv.lo, c1);
-        double exit = iv.hi >= S ? c1 : std::min(c0 + iv.hi, c1);
-        if (exit < u0 || enter > u1) continue;
-        enter = std::max(enter, u0);
-        exit = std::min(exit, u1);
-        if (!visit(enter, exit)) return;
+        if (iv.hi < u0 || iv.lo > u1) continue;
+        if (!visit(std::max(iv.lo, u0), std::min(iv.hi, u1))) return;
       }
     }
-    if (qa.t1 < qb.t1) {
-      ++ia;
-    } else if (qb.t1 < qa.t1) {
-      ++ib;
-    } else {
-      ++ia;
-      ++ib;
-    }
+    advance();
   }
 }
 
@@ -80,6 +84,10 @@ void pair_contact_intervals(const Trajectories& traj, std::uint32_t a, std::uint
 
 std::optional<double> pair_first_contact(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double u0,
                                          double u1) {
+  // Deep in contact at u0 (certain in double precision): u0 lies inside a truth interval.
+  if (u1 >= u0 &&
+      certain_contact(traj, a, traj.piece_index(a, u0), b, traj.piece_index(b, u0), u0) == ContactCertainty::Contact)
+    return u0;
   std::optional<double> result;
   for_each_piece_interval(traj, a, b, u0, u1, [&](double enter, double) {
     result = enter;

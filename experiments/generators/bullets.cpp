@@ -2,6 +2,7 @@
 // bodies: the case where a discrete check at a coarse timestep tunnels through contacts.
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
+#include <experiments/generators/placement.hpp>
 #include <experiments/generators/sampling.hpp>
 
 #include <algorithm>
@@ -25,6 +26,7 @@ constexpr ParameterSpec kParameters[] = {
      kVolumeFraction},
     {"bullet_radius", 0.05, "radius of every bullet", ParameterKind::Real, kPositiveLength},
     {"bullet_speed", 200.0, "speed of every bullet", ParameterKind::Real, kNonNegativeRate},
+    kOverlapParameter,
 };
 
 ccd::Scene generate_bullets(const GeneratorParameters& p) {
@@ -42,16 +44,17 @@ ccd::Scene generate_bullets(const GeneratorParameters& p) {
 
   ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
+  Placement placement(std::max(r_max, bullet_radius), p.integer("overlap") == 1);
   for (std::size_t i = 0; i < n_field; ++i) {
     ccd::Body& b = scene.bodies[i];
     b.radius = rng.uniform(r_min, r_max);
-    b.position = rng.position_in_cube(side, b.radius);
+    b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     b.velocity = rng.velocity(speed_max);
   }
   for (std::size_t i = n_field; i < n; ++i) {
     ccd::Body& b = scene.bodies[i];
     b.radius = bullet_radius;
-    b.position = rng.position_in_cube(side, b.radius);
+    b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     // Aim at a random field body's centre at t = 0 (or a random point without a field).
     const ccd::Vec3 target = n_field > 0 ? scene.bodies[rng.index(n_field)].position
                                          : rng.position_in_cube(side, bullet_radius);

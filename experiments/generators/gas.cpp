@@ -1,6 +1,7 @@
 // `gas`: spheres in a box moving in straight lines (no gravity, elastic walls).
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
+#include <experiments/generators/placement.hpp>
 #include <experiments/generators/sampling.hpp>
 
 namespace ccdlab {
@@ -16,6 +17,7 @@ constexpr ParameterSpec kParameters[] = {
     {"speed_max", 10.0, "speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
      kNonNegativeRate},
     kBoxFractionParameter,
+    kOverlapParameter,
 };
 
 ccd::Scene generate_gas(const GeneratorParameters& p) {
@@ -28,9 +30,10 @@ ccd::Scene generate_gas(const GeneratorParameters& p) {
 
   ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
+  Placement placement(r_max, p.integer("overlap") == 1);
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);
-    b.position = rng.position_in_cube(side, b.radius);
+    b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     b.velocity = rng.velocity(speed_max);
   }
   return scene;

@@ -2,6 +2,7 @@
 // the case that defeats a single grid cell size.
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
+#include <experiments/generators/placement.hpp>
 #include <experiments/generators/sampling.hpp>
 
 #include <algorithm>
@@ -21,6 +22,7 @@ constexpr ParameterSpec kParameters[] = {
     {"speed_max", 10.0, "speeds uniform in [0, speed_max], directions uniform", ParameterKind::Real,
      kNonNegativeRate},
     kBoxFractionParameter,
+    kOverlapParameter,
 };
 
 ccd::Scene generate_mixed(const GeneratorParameters& p) {
@@ -34,6 +36,7 @@ ccd::Scene generate_mixed(const GeneratorParameters& p) {
 
   ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
+  Placement placement(r_max, p.integer("overlap") == 1);
   for (std::size_t i = 0; i < n; ++i) {
     ccd::Body& b = scene.bodies[i];
     // Bodies 0 and 1 take the extremes exactly (no draw), so every scene of two or more
@@ -44,7 +47,7 @@ ccd::Scene generate_mixed(const GeneratorParameters& p) {
       b.radius = r_max;
     else
       b.radius = std::clamp(r_min * std::exp(log_ratio * rng.uniform()), r_min, r_max);
-    b.position = rng.position_in_cube(side, b.radius);
+    b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     b.velocity = rng.velocity(speed_max);
   }
   return scene;

@@ -81,6 +81,12 @@ inline constexpr ParameterSpec kBoxFractionParameter{
     "fraction", 0.02, "volume fraction of the box [0, L]^3 filled by the spheres", ParameterKind::Real,
     kVolumeFraction};
 
+/// Whether bodies may overlap at t = 0 (the random generators redraw overlapping positions
+/// unless it is 1).
+inline constexpr ParameterSpec kOverlapParameter{
+    "overlap", 0.0, "1 keeps bodies that overlap at t = 0; 0 draws an overlapping position again",
+    ParameterKind::Integer, {0.0, 1.0, false, false}};
+
 /// One parameter as given, before checking: a name and one or more numbers.
 struct ParameterValue {
   std::string name;

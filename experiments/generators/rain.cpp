@@ -3,6 +3,7 @@
 // the worst axis for sweep and prune.
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
+#include <experiments/generators/placement.hpp>
 #include <experiments/generators/sampling.hpp>
 
 namespace ccdlab {
@@ -23,6 +24,7 @@ constexpr ParameterSpec kParameters[] = {
      ParameterKind::Real, kNonNegativeRate},
     {"gravity", 9.81, "gravity magnitude; the scene's gravity is [0, -gravity, 0]", ParameterKind::Real,
      kNonNegativeRate},
+    kOverlapParameter,
 };
 
 ccd::Scene generate_rain(const GeneratorParameters& p) {
@@ -39,12 +41,15 @@ ccd::Scene generate_rain(const GeneratorParameters& p) {
   ccd::Scene scene = box_scene(p, ccd::Vec3(width, height, width));
   scene.gravity = ccd::Vec3(0.0, -p.number("gravity"), 0.0);
   Random rng(p.integer("seed"));
+  Placement placement(r_max, p.integer("overlap") == 1);
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);
-    const double x = rng.coordinate(0.0, width, b.radius);
-    const double y = rng.coordinate(0.0, height, b.radius);
-    const double z = rng.coordinate(0.0, width, b.radius);
-    b.position = ccd::Vec3(x, y, z);
+    b.position = placement.place(b.radius, [&] {
+      const double x = rng.coordinate(0.0, width, b.radius);
+      const double y = rng.coordinate(0.0, height, b.radius);
+      const double z = rng.coordinate(0.0, width, b.radius);
+      return ccd::Vec3(x, y, z);
+    });
     b.velocity = rng.in_horizontal_disc(speed_max);
   }
   return scene;

@@ -2,6 +2,7 @@
 // accelerations: |a| <= max_acceleration at all times, changing at known times.
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
+#include <experiments/generators/placement.hpp>
 #include <experiments/generators/sampling.hpp>
 
 #include <algorithm>
@@ -26,6 +27,7 @@ constexpr ParameterSpec kParameters[] = {
      {0.0, 1000.0, false, false}},
     {"regular", 0.0, "1: changes at horizon k / (changes + 1); 0: at sorted uniform random times",
      ParameterKind::Integer, {0.0, 1.0, false, false}},
+    kOverlapParameter,
 };
 
 // `count` sorted times uniform in (0, horizon), strictly increasing; the whole set is
@@ -57,9 +59,10 @@ ccd::Scene generate_swarm(const GeneratorParameters& p) {
 
   ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   Random rng(p.integer("seed"));
+  Placement placement(r_max, p.integer("overlap") == 1);
   for (ccd::Body& b : scene.bodies) {
     b.radius = rng.uniform(r_min, r_max);
-    b.position = rng.position_in_cube(side, b.radius);
+    b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     b.velocity = rng.velocity(speed_max);
     b.acceleration = rng.in_ball(max_acc);
     if (!regular) random_times(rng, horizon, times);

@@ -4,6 +4,7 @@
 #include <ccd/truth/ground_truth.hpp>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <limits>
 
 using ccd::Vec3;
@@ -110,4 +111,67 @@ TEST_CASE("a bounded bound with a too-small acceleration bound misses, and says 
   CHECK(f.run("horn:4/brute", 2.0, 0.0).missed == 1);
   CHECK(f.run("horn:4/brute", 2.0, 2.0).missed == 0);
   CHECK(f.run("enclosing_sphere/brute", 2.0, 2.0).missed == 0);
+}
+
+TEST_CASE("the sample set is every t_k = k * dt (the double product) with t_k <= T", "[runner]") {
+  // 43 * 0.1 == 4.3 in double although floor(4.3 / 0.1) == 42: the sample at T is taken.
+  REQUIRE(43 * 0.1 == 4.3);
+  REQUIRE(std::floor(4.3 / 0.1) == 42.0);
+  CHECK(ccdlab::sample_count(4.3, 0.1) == 44);
+  CHECK(ccdlab::sample_count(1.0, 0.1) == 11);       // 10 * 0.1 == 1.0
+  CHECK(ccdlab::sample_count(1.0, 1.0 / 3) == 4);    // 3 * (1/3) == 1.0
+  CHECK(ccdlab::sample_count(0.7, 0.1) == 7);        // 7 * 0.1 > 0.7: k = 0..6
+  CHECK(ccdlab::sample_count(1.0, 2.0) == 1);        // only t = 0
+  CHECK(ccdlab::sample_count(1.0, 0.0) == 0);
+  for (double dt : {0.1, 0.3, 0.7, 1.0 / 3, 1e-3, 0.0123}) {
+    CAPTURE(dt);
+    const std::uint64_t n = ccdlab::sample_count(4.3, dt);
+    CHECK(double(n - 1) * dt <= 4.3);
+    CHECK(double(n) * dt > 4.3);
+  }
+  // A tangency exactly at T = 4.3 is seen by a discrete method at its last sample.
+  ccd::Scene s;
+  s.horizon = 4.3;
+  s.bodies.push_back({0.5, Vec3(0, 0, 0), Vec3::Zero(), Vec3::Zero(), {}});
+  s.bodies.push_back({0.5, Vec3(-4.3, 1, 0), Vec3(1, 0, 0), Vec3::Zero(), {}});
+  const Fixture f(s);
+  REQUIRE(f.truth.events().size() == 1);
+  CHECK(f.truth.events()[0].enter == 4.3);
+  CHECK(f.truth.events()[0].exit == 4.3);
+  const auto r = f.run("sphere/brute", 0.1);
+  CHECK(r.steps == 44);
+  CHECK(r.missed == 0);
+  CHECK(r.self_check_unexpected == 0);
+  CHECK(f.run("capsule/brute", 0.1).missed == 0);
+}
+
+TEST_CASE("events in progress at t = 0 are counted apart from misses, lag and penetration", "[runner]") {
+  // Pair (0, 1) overlaps by 0.5 at t = 0 and separates; pair (2, 3) meets head-on later.
+  ccd::Scene s;
+  s.horizon = 10.0;
+  s.bodies.push_back({0.5, Vec3(0, 0, 0), Vec3(-1, 0, 0), Vec3::Zero(), {}});
+  s.bodies.push_back({0.5, Vec3(0.5, 0, 0), Vec3(1, 0, 0), Vec3::Zero(), {}});
+  s.bodies.push_back({0.5, Vec3(0, 100, 0), Vec3(1, 0, 0), Vec3::Zero(), {}});
+  s.bodies.push_back({0.5, Vec3(10, 100, 0), Vec3(-1, 0, 0), Vec3::Zero(), {}});
+  const Fixture f(s);
+  REQUIRE(f.truth.events().size() == 2);
+  SECTION("a discrete method that tunnels the later event") {
+    const auto r = f.run("sphere/brute", 2.0);
+    CHECK(r.events == 2);
+    CHECK(r.initial_contacts == 1);
+    CHECK(r.detected == 0);
+    CHECK(r.missed == 1);
+    CHECK(r.max_penetration == 0.0);  // the initial overlap of 0.5 does not count
+  }
+  SECTION("a continuous method: zero depth, zero lag") {
+    const auto r = f.run("capsule/brute", 2.0);
+    CHECK(r.initial_contacts == 1);
+    CHECK(r.detected == 1);
+    CHECK(r.missed == 0);
+    CHECK(r.max_penetration <= 4 * eps);
+    CHECK(r.max_lag == 0.0);
+  }
+  const nlohmann::json j = ccdlab::to_json(f.run("sphere/brute", 2.0));
+  CHECK(j["initial_contacts"] == 1);
+  CHECK(j["missed_fraction"] == 1.0);  // 1 missed of the 1 event not in progress at t = 0
 }

@@ -68,7 +68,7 @@ TEST_CASE("study tunnelling: conservative bounds miss nothing, discrete methods 
       CAPTURE(m, dt);
       const auto r = s.run(m, dt);
       CHECK(r.missed == 0);
-      CHECK(r.detected == r.events);
+      CHECK(r.detected + r.initial_contacts == r.events);
       check_self(r);
     }
   const auto coarse = s.run("aabb/sap", 0.1);
@@ -161,8 +161,8 @@ TEST_CASE("study grazing: the truth reports tangent events, conservative methods
   const Study s("grazing", {{"bodies", 64}, {"seed", 2}});
   std::size_t tangent = 0;
   for (const ccd::ContactEvent& e : s.truth.events()) tangent += e.enter == e.exit;
-  CHECK(s.truth.events().size() == 24);
-  CHECK(tangent == 16);
+  CHECK(s.truth.events().size() == 16);  // one ulp beyond is a separation, as are near misses
+  CHECK(tangent == 8);
   for (const std::string& m : kConservative)
     for (double dt : {0.25, 1.0 / 64, 0.01}) {
       CAPTURE(m, dt);

@@ -96,3 +96,81 @@ TEST_CASE("swept bounds contain the path and the vertex of the parabola", "[moti
   CHECK(b.lo.y() == Approx(-0.5));
   CHECK(b.hi.x() == Approx(2.5));
 }
+
+TEST_CASE("a reflection at an exactly representable time is exact, state and time", "[motion]") {
+  // Dropped from 0.5 + 2^-3 with a = -1/4 onto the plane y = 0.5: hits at t = 1 exactly
+  // with speed 1/4, and is back at the top at t = 2 with velocity 0.
+  ccd::Scene s = box_scene(2.0);
+  s.bodies.push_back({0.5, Vec3(5, 0.625, 5), Vec3::Zero(), Vec3(0, -0.25, 0), {}});
+  const ccd::Trajectories t(s);
+  REQUIRE(t.pieces(0).size() == 2);
+  CHECK(t.pieces(0)[0].t1 == 1.0);
+  CHECK(t.pieces(0)[1].p == Vec3(5, 0.5, 5));
+  CHECK(t.pieces(0)[1].v == Vec3(0, 0.25, 0));
+  CHECK(t.lows(0)[1].edge_error == 0.0);
+  CHECK(t.position(0, 2.0) == Vec3(5, 0.625, 5));
+}
+
+TEST_CASE("a reflection at an irrational time records its window and error", "[motion]") {
+  ccd::Scene s = box_scene(2.0);
+  s.gravity = Vec3(0, -9.81, 0);
+  s.bodies.push_back({1.0, Vec3(5, 5, 5), Vec3::Zero(), Vec3::Zero(), {}});
+  const ccd::Trajectories t(s);
+  const auto lows = t.lows(0);
+  REQUIRE(lows.size() >= 2);
+  // |t* - t_r| <= half an ulp of t_r, so the error is at most |v| ulp.
+  const double t_r = t.pieces(0)[0].t1;
+  const double ulp = std::nextafter(t_r, 10.0) - t_r;
+  CHECK(lows[1].edge_window <= ulp);
+  CHECK(lows[1].edge_error <= 9.81 * t_r * ulp * 1.01);
+  // The exact state right after the bounce is on the plane up to that error.
+  const ccd::DdVec3 p = ccd::exact_position(t.pieces(0)[1], lows[1], t_r);
+  CHECK(std::fabs((p[1] - ccd::Dd(1.0)).value()) <= lows[1].edge_error);
+}
+
+TEST_CASE("bodies almost at rest on a wall rest instead of bouncing ever faster", "[motion]") {
+  // Resting rule: pushed into a wall and unable to rise more than 2^-30 of the box extent.
+  SECTION("reproducer: a soft landing built from decimal numbers") {
+    ccd::Scene s = box_scene(1.5);
+    s.box = ccd::WallBox{Vec3(0, 0, 0), Vec3(4, 4, 4)};
+    s.gravity = Vec3(0, -9.81, 0);
+    ccd::Body b{0.5, Vec3(2, 0.5642857142857143, 2), Vec3(0, -0.3, 0), Vec3(0, 10.51, 0), {}};
+    b.acceleration_changes.push_back({0.4285714285714286, Vec3::Zero()});
+    s.bodies.push_back(b);
+    const ccd::Trajectories t(s);  // used to need more than 10^6 pieces
+    CHECK(t.pieces(0).size() <= 3);
+    CHECK(t.position(0, 1.5).y() == 0.5);
+    CHECK(t.velocity(0, 1.5).y() == 0.0);
+  }
+  SECTION("2^-52 and 1e-10 above the floor, horizon 10") {
+    const double h = GENERATE(0x1p-52, 1e-10, 0.0);
+    CAPTURE(h);
+    ccd::Scene s = box_scene(10.0);
+    s.box = ccd::WallBox{Vec3(0, 0, 0), Vec3(4, 4, 4)};
+    s.gravity = Vec3(0, -9.81, 0);
+    s.bodies.push_back({0.5, Vec3(2, 0.5 + h, 2), Vec3(1, 0, 0), Vec3::Zero(), {}});
+    const ccd::Trajectories t(s);
+    CHECK(t.pieces(0).size() <= 4);  // the side walls still reflect the x motion
+    CHECK(t.position(0, 10.0).y() == 0.5);
+  }
+  SECTION("above the rest height a ball keeps bouncing elastically") {
+    // 2^-20 above the floor: rest height is 4 * 2^-30 = 2^-28; many exact bounces.
+    ccd::Scene s = box_scene(1.0);
+    s.box = ccd::WallBox{Vec3(0, 0, 0), Vec3(4, 4, 4)};
+    s.bodies.push_back({0.5, Vec3(2, 0.5 + 0x1p-20, 2), Vec3::Zero(), Vec3(0, -2, 0), {}});
+    const ccd::Trajectories t(s);
+    // Fall time sqrt(2 h / a) = 2^-10: bounces every 2^-9 s, 512 of them over 1 s.
+    CHECK(t.pieces(0).size() == 513);
+    double top = 0.0;
+    for (const ccd::Piece& q : t.pieces(0)) top = std::max(top, q.centre_bounds(q.t0, q.t1).hi.y());
+    CHECK(top == 0.5 + 0x1p-20);
+  }
+  SECTION("moving fast into the floor is a reflection, not rest") {
+    ccd::Scene s = box_scene(1.0);
+    s.gravity = Vec3(0, -9.81, 0);
+    s.bodies.push_back({0.5, Vec3(5, 0.5, 5), Vec3(0, -1, 0), Vec3::Zero(), {}});
+    const ccd::Trajectories t(s);
+    CHECK(t.velocity(0, 0.0).y() == 1.0);
+    CHECK(t.position(0, 0.1).y() > 0.5);
+  }
+}

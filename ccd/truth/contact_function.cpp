@@ -1,0 +1,46 @@
+#include <ccd/truth/contact_function.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ccd {
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+ContactCertainty certain_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b,
+                                 std::size_t ib, double t) {
+  const Piece& qa = traj.pieces(a)[ia];
+  const Piece& qb = traj.pieces(b)[ib];
+  const double R = traj.radius(a) + traj.radius(b);
+  const Vec3 d = qb.position(t) - qa.position(t);
+  const double dn = d.norm();
+  const double f = d.squaredNorm() - R * R;
+  const double P = std::max(piece_magnitude(qa, t), piece_magnitude(qb, t));
+  const double edge = traj.lows(a)[ia].edge_error + traj.lows(b)[ib].edge_error;
+  const double band = 64.0 * kEps * (dn + R) * (dn + R + P) + 4.0 * (dn + R) * edge;
+  if (f > band) return ContactCertainty::Apart;
+  if (f < -band) return ContactCertainty::Contact;
+  return ContactCertainty::Unsure;
+}
+
+bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b, std::size_t ib, double t) {
+  switch (certain_contact(traj, a, ia, b, ib, t)) {
+    case ContactCertainty::Apart: return false;
+    case ContactCertainty::Contact: return true;
+    case ContactCertainty::Unsure: break;
+  }
+  const PairMotion m(traj.pieces(a)[ia], traj.lows(a)[ia], traj.radius(a), traj.pieces(b)[ib], traj.lows(b)[ib],
+                     traj.radius(b));
+  const ContactValue v = m.value(t);
+  return v.f <= v.error;
+}
+
+bool in_contact(const Trajectories& traj, std::uint32_t a, std::uint32_t b, double t) {
+  return in_contact(traj, a, traj.piece_index(a, t), b, traj.piece_index(b, t), t);
+}
+
+}  // namespace ccd
