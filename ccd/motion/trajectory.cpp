@@ -129,6 +129,7 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
     State st{0.0, DdVec3(b.position), DdVec3(b.velocity), own_plus_gravity(b.acceleration)};
     std::size_t next_change = 0;
     double carried_window = 0.0, carried_error = 0.0;  // from the reflection that began this piece
+    double pos_error = 0.0, vel_error = 0.0;           // double-double rounding carried so far
     while (true) {
       const double t_change = next_change < b.acceleration_changes.size()
                                   ? b.acceleration_changes[next_change].t
@@ -182,7 +183,7 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
         }
       }
       Piece piece{st.t, t_next, here.p.hi(), here.v.hi(), here.a.hi()};
-      PieceLow low{here.p.lo(), here.v.lo(), here.a.lo(), carried_window, carried_error};
+      PieceLow low{here.p.lo(), here.v.lo(), here.a.lo(), carried_window, carried_error, pos_error, vel_error};
       pieces_.push_back(piece);
       lows_.push_back(low);
       if (pieces_.size() - start > options.max_pieces_per_body)
@@ -191,6 +192,17 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
       State next{t_next, exact_position(piece, low, t_next), exact_velocity(piece, low, t_next), st.a};
       carried_window = 0.0;
       carried_error = 0.0;
+      {  // Rounding of evaluating the piece at its end (and of the reflection below).
+        constexpr double kU2 = kUnitRoundoff * kUnitRoundoff;
+        const double S = t_next - piece.t0;
+        double vmag = 0.0, pmag = 0.0;
+        for (int k = 0; k < 3; ++k) {
+          vmag = std::max(vmag, std::fabs(piece.v[k]) + std::fabs(piece.a[k]) * S);
+          pmag = std::max(pmag, std::fabs(piece.p[k]) + std::fabs(piece.v[k]) * S + 0.5 * std::fabs(piece.a[k]) * S * S);
+        }
+        pos_error += vel_error * S + 64.0 * kU2 * (pmag + vmag * S);
+        vel_error += 64.0 * kU2 * vmag;
+      }
       if (wall_axis >= 0) {
         // The branch after the reflection, extrapolated from t* back to the double t_next.
         const int k = wall_axis;

@@ -22,7 +22,9 @@
 // rounding of their own (about 1e-32 relative). Piece times are doubles: when a
 // reflection time is not a double, the piece boundary t_r is the nearest double, each
 // piece follows its exact branch (extrapolated by |t* - t_r|), and PieceLow records the
-// window |t* - t_r| and the position error 2 |v_n| |t* - t_r| inside it.
+// window |t* - t_r| and the position error 2 |v_n| |t* - t_r| inside it, and the
+// rounding of the double-double operations carried from break to break (about
+// 32 u^2 of the magnitudes per break, u = 2^-53).
 // Limits: at most `max_pieces_per_body` pieces per body (a body that would need more
 // throws TooManyPieces naming it: a ball bouncing ever faster).
 #include <ccd/geometry/aabb.hpp>
@@ -75,6 +77,11 @@ struct PieceLow {
   Vec3 a{Vec3::Zero()};  ///< exact acceleration = Piece::a + a (own + gravity is not always a double)
   double edge_window = 0.0;  ///< seconds: within this of either end the model may be off by
   double edge_error = 0.0;   ///< metres: at most this (an inexact reflection time); 0 otherwise
+  /// Bounds on the double-double rounding carried into this piece's start state by the
+  /// breaks before it (0 on a body's first piece, whose state is the scene's data):
+  /// position error <= start_error + velocity_error |t - t0| on the piece.
+  double start_error = 0.0;     ///< metres
+  double velocity_error = 0.0;  ///< metres per second
 };
 
 /// Exact (double-double) position and velocity of piece q at time t (any double t; the

@@ -16,7 +16,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // Error bound of one body's double-double position at t (per coordinate, metres).
 double position_error(const Piece& q, const PieceLow& low, double t) {
-  double e = 32.0 * kU2 * piece_magnitude(q, t) * (1.0 + 1e-5);
+  double e = 32.0 * kU2 * piece_magnitude(q, t) * (1.0 + 1e-5) + low.start_error +
+             low.velocity_error * std::fabs(t - q.t0) * (1.0 + 1e-5);
   if (low.edge_error > 0.0 && (t - q.t0 <= low.edge_window || q.t1 - t <= low.edge_window)) e += low.edge_error;
   return e;
 }
@@ -134,19 +135,18 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
       band[i] += curvature_bound(s.x[i]) * ulp2 * ulp2;
     }
   }
-  enum State { Out, In, Touch };
-  std::array<State, MonotoneSplit::capacity> st{};
+  SplitStates st{};
   const int m = s.count - 1;
   auto out_at = [&](int j) { return s.v[j] > band[j]; };
   for (int i = 0; i <= m; ++i) {
     const double v = s.v[i];
     const bool local_min = (i == 0 || s.v[i - 1] >= v) && (i == m || s.v[i + 1] >= v);
     if (out_at(i)) {
-      st[i] = Out;
+      st[i] = SplitState::Out;
     } else if (local_min && v >= -band[i] && (i == 0 || out_at(i - 1)) && (i == m || out_at(i + 1))) {
-      st[i] = Touch;
+      st[i] = SplitState::Touch;
     } else {
-      st[i] = In;
+      st[i] = SplitState::In;
     }
   }
   // A boundary between an in and an out breakpoint: the double-precision root as the
@@ -160,7 +160,7 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
     };
     double guess = std::numeric_limits<double>::quiet_NaN();
     if (ds.Da.isZero(0.0)) {
-      // f = A u^2 + 2 B u + C: the stable roots q / A and C / q (ccd-math notes, section 2).
+      // f = A u^2 + 2 B u + C: the stable roots q / A and C / q, q = -(B + sign(B) sqrt(B^2 - A C)).
       const double A = ds.Dv.squaredNorm(), B = ds.D0.dot(ds.Dv), C = ds.D0.squaredNorm() - ds.R * ds.R;
       const double disc = B * B - A * C;
       if (A > 0.0 && disc >= 0.0) {
@@ -180,30 +180,7 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
         },
         s.x[i], s.x[i + 1], in_left, guess);
   };
-  SublevelSet out;
-  auto emit = [&out](double lo, double hi) {
-    if (out.count < SublevelSet::capacity) out.intervals[out.count++] = {lo, hi};
-  };
-  bool open = false;
-  double start = 0.0;
-  for (int i = 0; i <= m; ++i) {
-    if (st[i] == Touch) emit(s.x[i], s.x[i]);
-    if (st[i] == In && !open) {
-      open = true;
-      start = s.x[i];
-    }
-    if (i == m) break;
-    const bool in_i = st[i] == In, in_j = st[i + 1] == In;
-    if (in_i && !in_j) {
-      emit(start, boundary(i, true));
-      open = false;
-    } else if (!in_i && in_j) {
-      open = true;
-      start = boundary(i, false);
-    }
-  }
-  if (open) emit(start, s.x[m]);
-  return out;
+  return assemble_sublevel_set(s, st, boundary);
 }
 
 PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {
@@ -236,7 +213,8 @@ PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {
   for (int i = 0; i < r.split.count; ++i) fmin = std::min(fmin, f_at(r.split.x[i]));
   const double M = D0.norm() + Dv.norm() * S + 0.5 * Da.norm() * S * S;
   const double P = std::max(piece_magnitude(*qa_, c1), piece_magnitude(*qb_, c1));
-  const double edge = la_->edge_error + lb_->edge_error;
+  const double edge = la_->edge_error + lb_->edge_error + la_->start_error + lb_->start_error +
+                      (la_->velocity_error + lb_->velocity_error) * (c1 - std::min(qa_->t0, qb_->t0));
   const double band = 128.0 * kEps * (M + R) * (M + R + P) + 4.0 * (M + R) * edge;
   r.apart = fmin > band;
   return r;

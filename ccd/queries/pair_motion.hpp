@@ -9,7 +9,8 @@
 // r_a + r_b is formed exactly, so the only rounding is that of the double-double
 // operations themselves (bounded below) plus the model's own error near an inexact
 // reflection time (PieceLow::edge_error). docs/truth.md derives the bound:
-//   e_x   = 32 u^2 (|p| + |v| |s| + |a| s^2 / 2) per coordinate and body, u = 2^-53,
+//   e_x   = 32 u^2 (|p| + |v| |s| + |a| s^2 / 2) + start_error + velocity_error |s|
+//           per coordinate and body, u = 2^-53 (the last two carried from earlier breaks),
 //   e_d   = sqrt(3) (e_x,a + e_x,b) + 4 u^2 |d| + edge errors       (error of d = c_b - c_a)
 //   error = 2 |d| e_d + e_d^2 + 16 u^2 (|d|^2 + R^2) + 4 u^2 |f|   (error of f)
 // The band therefore scales with the squared unit roundoff and the data's magnitudes,

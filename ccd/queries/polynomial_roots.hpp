@@ -127,48 +127,62 @@ double refine_sign_change(F&& f_and_df, double a, double b, bool in_a, double gu
   return in_a ? a : b;
 }
 
-/// Assembles the sublevel set from a monotone split whose values are filled in.
-/// root(i) returns the in-side boundary of the sign change on segment [x[i], x[i+1]].
+/// What a breakpoint of a monotone split is: out of the set, in it, or an isolated
+/// touching point.
+enum class SplitState : unsigned char { Out, In, Touch };
+using SplitStates = std::array<SplitState, MonotoneSplit::capacity>;
+
+/// The sublevel set from classified breakpoints: a Touch point is [x, x]; between an In
+/// and an Out breakpoint, root(i, in_left) returns the in-side boundary of the sign change
+/// on segment [x[i], x[i+1]] (in_left: the In breakpoint is x[i]).
+template <class Root>
+SublevelSet assemble_sublevel_set(const MonotoneSplit& s, const SplitStates& st, Root&& root) {
+  SublevelSet out;
+  auto emit = [&out](double lo, double hi) {
+    if (out.count < SublevelSet::capacity) out.intervals[out.count++] = {lo, hi};
+  };
+  const int m = s.count - 1;
+  bool open = false;
+  double start = 0.0;
+  for (int i = 0; i <= m; ++i) {
+    if (st[i] == SplitState::Touch) emit(s.x[i], s.x[i]);
+    if (st[i] == SplitState::In && !open) {
+      open = true;
+      start = s.x[i];
+    }
+    if (i == m) break;
+    const bool in_i = st[i] == SplitState::In;
+    const bool in_j = st[i + 1] == SplitState::In;
+    if (in_i && !in_j) {
+      emit(start, root(i, true));
+      open = false;
+    } else if (!in_i && in_j) {
+      open = true;
+      start = root(i, false);
+    }
+  }
+  if (open) emit(start, s.x[m]);
+  return out;
+}
+
+/// Assembles the sublevel set from a monotone split whose values are filled in, with the
+/// tangency rules above. root(i) returns the in-side boundary of the sign change on
+/// segment [x[i], x[i+1]].
 template <class Root>
 SublevelSet sublevel_set_from_split(const MonotoneSplit& s, double tol, Root&& root) {
-  enum State { Out, In, Touch };
-  std::array<State, MonotoneSplit::capacity> st{};
+  SplitStates st{};
   const int m = s.count - 1;
   for (int i = 0; i <= m; ++i) {
     const double v = s.v[i];
     const bool local_min = (i == 0 || s.v[i - 1] >= v) && (i == m || s.v[i + 1] >= v);
     if (v <= 0.0) {
       const bool snap = local_min && i > 0 && i < m && v >= -tol && s.v[i - 1] > 0.0 && s.v[i + 1] > 0.0;
-      st[i] = snap ? Touch : In;
+      st[i] = snap ? SplitState::Touch : SplitState::In;
     } else {
-      st[i] = (local_min && v <= tol) ? Touch : Out;
+      st[i] = (local_min && v <= tol) ? SplitState::Touch : SplitState::Out;
     }
   }
-  SublevelSet out;
-  auto emit = [&out](double lo, double hi) {
-    if (out.count < SublevelSet::capacity) out.intervals[out.count++] = {lo, hi};
-  };
-  bool open = false;
-  double start = 0.0;
-  for (int i = 0; i <= m; ++i) {
-    if (st[i] == Touch) emit(s.x[i], s.x[i]);
-    if (st[i] == In && !open) {
-      open = true;
-      start = s.x[i];
-    }
-    if (i == m) break;
-    const bool in_i = st[i] == In;
-    const bool in_j = st[i + 1] == In;
-    if (in_i && !in_j) {
-      emit(start, root(i));
-      open = false;
-    } else if (!in_i && in_j) {
-      open = true;
-      start = root(i);
-    }
-  }
-  if (open) emit(start, s.x[m]);
-  return out;
+  return assemble_sublevel_set(s, st, [&](int i, bool) { return root(i); });
 }
 
 }  // namespace ccd

@@ -20,7 +20,10 @@ ContactCertainty certain_contact(const Trajectories& traj, std::uint32_t a, std:
   const double dn = d.norm();
   const double f = d.squaredNorm() - R * R;
   const double P = std::max(piece_magnitude(qa, t), piece_magnitude(qb, t));
-  const double edge = traj.lows(a)[ia].edge_error + traj.lows(b)[ib].edge_error;
+  const PieceLow& la = traj.lows(a)[ia];
+  const PieceLow& lb = traj.lows(b)[ib];
+  const double edge = la.edge_error + lb.edge_error + la.start_error + lb.start_error +
+                      la.velocity_error * std::fabs(t - qa.t0) + lb.velocity_error * std::fabs(t - qb.t0);
   const double band = 64.0 * kEps * (dn + R) * (dn + R + P) + 4.0 * (dn + R) * edge;
   if (f > band) return ContactCertainty::Apart;
   if (f < -band) return ContactCertainty::Contact;

@@ -10,25 +10,19 @@
 #include <ccd/truth/ground_truth.hpp>
 #include <experiments/generators/registry.hpp>
 
+#include <tests/ccd/scene/body_builder.hpp>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 
 using ccd::Body;
 using ccd::Vec3;
+using ccd::test::body;
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Body body(double r, Vec3 p, Vec3 v = Vec3::Zero(), Vec3 a = Vec3::Zero()) {
-  Body b;
-  b.radius = r;
-  b.position = p;
-  b.velocity = v;
-  b.acceleration = a;
-  return b;
-}
 
 struct Expected {
   std::uint32_t a, b;

@@ -5,6 +5,8 @@
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/pair_contact.hpp>
 
+#include <tests/ccd/scene/body_builder.hpp>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
@@ -14,19 +16,11 @@ using ccd::ContactInterval;
 using ccd::Scene;
 using ccd::Trajectories;
 using ccd::Vec3;
+using ccd::test::body;
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Body body(double r, Vec3 p, Vec3 v = Vec3::Zero(), Vec3 a = Vec3::Zero()) {
-  Body b;
-  b.radius = r;
-  b.position = p;
-  b.velocity = v;
-  b.acceleration = a;
-  return b;
-}
 
 Scene two_bodies(double horizon, const Body& a, const Body& b) {
   Scene s;

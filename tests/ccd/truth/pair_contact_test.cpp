@@ -1,5 +1,7 @@
 #include <ccd/truth/pair_contact.hpp>
 
+#include <tests/ccd/scene/body_builder.hpp>
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -9,19 +11,11 @@ using ccd::ContactInterval;
 using ccd::Scene;
 using ccd::Trajectories;
 using ccd::Vec3;
+using ccd::test::body;
 
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-
-Body body(double r, Vec3 p, Vec3 v = Vec3::Zero(), Vec3 a = Vec3::Zero()) {
-  Body b;
-  b.radius = r;
-  b.position = p;
-  b.velocity = v;
-  b.acceleration = a;
-  return b;
-}
 
 std::vector<ContactInterval> intervals(const Trajectories& t, double u0, double u1) {
   std::vector<ContactInterval> out;
