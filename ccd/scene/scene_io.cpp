@@ -1,6 +1,7 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/io/sha256.hpp>
 #include <ccd/scene/input_error.hpp>
@@ -115,8 +116,9 @@ void validate_scene(const Scene& s, const std::string& file) {
           r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
         // A body as wide as the box on an axis touches both walls at once: it cannot move
         // along that axis (it would reflect at both walls in zero time and leave the box).
-        const double lo = s.box->min[a] + b.radius, hi = s.box->max[a] - b.radius;  // as the trajectory
-        if (!(lo < hi) && b.velocity[a] != 0.0)
+        // Wall planes as the trajectory takes them: the exact sums, compared exactly.
+        const Dd room = two_sum(s.box->max[a], -b.radius) - two_sum(s.box->min[a], b.radius);
+        if (!(room.value() > 0.0) && b.velocity[a] != 0.0)
           r.fail(p + ".velocity[" + std::to_string(a) + "]",
                  "must be 0: the body fills the box on this axis (no room to move between the walls)");
       }
