@@ -14,10 +14,9 @@ void AabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   boxes_.assign(boxes.begin(), boxes.end());
 }
 
-bool AabbBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
-  if (!boxes_[a].overlaps(boxes_[b])) return false;
-  if (earliest) *earliest = t0_;
-  return true;
+PairTest AabbBound::test(std::uint32_t a, std::uint32_t b) const {
+  if (!boxes_[a].overlaps(boxes_[b])) return PairTest::disjoint();
+  return PairTest::possible_from(t0_);
 }
 
 }  // namespace ccd

@@ -3,7 +3,7 @@
 // Test: always true for a pair the broad phase reported (their boxes overlap, and that is
 // the whole test); called on any pair it checks the box overlap. Conservative at the
 // sample time only (like `sphere`), looser: boxes overlap for spheres up to sqrt(3) (r1 +
-// r2) apart. `earliest` receives t0. Boxes are widened by the rounding slack.
+// r2) apart. `earliest` is t0. Boxes are widened by the rounding slack.
 #include <bounds/bound.hpp>
 
 namespace ccd {
@@ -11,7 +11,7 @@ namespace ccd {
 class AabbBound final : public Bound {
  public:
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
 
  private:
   std::vector<Aabb> boxes_;

@@ -6,11 +6,15 @@
 // pair test of its own that filters the broad phase's pairs. The registry is
 // bounds/registry.hpp; method names compose as BOUND/BROADPHASE.
 #include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/motion/body_state.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
 
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace ccd {
@@ -22,11 +26,29 @@ enum class Knowledge {
   Bounded,  ///< position and velocity at t0 and a bound A on |acceleration| (Hubbard)
 };
 
-/// State of a body at the start of a step: all a `Bounded` bound may read.
-struct BodyState {
-  Vec3 position{Vec3::Zero()};
-  Vec3 velocity{Vec3::Zero()};
-  double radius = 0.0;
+/// "instant", "exact", "bounded" (results files, `ccdlab methods`).
+constexpr std::string_view to_string(Knowledge k) {
+  switch (k) {
+    case Knowledge::Instant: return "instant";
+    case Knowledge::Exact: return "exact";
+    case Knowledge::Bounded: return "bounded";
+  }
+  return "unknown";
+}
+
+/// What a bound's pair test found (Box2D's b2TOIOutput style: a status and the time).
+struct PairTest {
+  enum class Status : std::uint8_t {
+    Disjoint,  ///< the two bounds do not meet during the step: no contact possible
+    Possible,  ///< the bounds meet: contact possible from `earliest` on
+  };
+  Status status = Status::Disjoint;
+  /// Possible: the earliest time in [t0, t1] at which contact is possible under the
+  /// bound (t0 when the bound carries no timing). Disjoint: +infinity.
+  double earliest = std::numeric_limits<double>::infinity();
+  bool possible() const { return status == Status::Possible; }
+  static PairTest disjoint() { return {}; }
+  static PairTest possible_from(double t) { return {Status::Possible, t}; }
 };
 
 struct StepContext {
@@ -44,10 +66,9 @@ class Bound {
   /// Computes the per-body data for the step and writes one AABB per body into `boxes`
   /// (resized to the body count): the box the body may occupy during the step.
   virtual void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) = 0;
-  /// The bound's own test for a pair the broad phase reported: false only when the two
-  /// bounds are disjoint. On true, `*earliest` (if not null) receives the earliest time
-  /// in [t0, t1] at which contact is possible under this bound (t0 when unknown).
-  virtual bool test(std::uint32_t a, std::uint32_t b, double* earliest) const = 0;
+  /// The bound's own test for a pair the broad phase reported: Disjoint only when the
+  /// two bounds are disjoint, else Possible with the earliest possible contact time.
+  virtual PairTest test(std::uint32_t a, std::uint32_t b) const = 0;
 };
 
 }  // namespace ccd

@@ -55,7 +55,7 @@ void CapsuleBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   }
 }
 
-bool CapsuleBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+PairTest CapsuleBound::test(std::uint32_t a, std::uint32_t b) const {
   const Capsule& x = capsules_[a];
   const Capsule& y = capsules_[b];
   const SegmentSegmentResult c = segment_segment_closest(x.p0, x.p1, y.p0, y.p1);
@@ -63,9 +63,8 @@ bool CapsuleBound::test(std::uint32_t a, std::uint32_t b, double* earliest) cons
   const double closest_error = 16.0 * std::numeric_limits<double>::epsilon() *
                                ((x.p1 - x.p0).squaredNorm() + (y.p1 - y.p0).squaredNorm() +
                                 (x.p0 - y.p0).squaredNorm());
-  if (c.distance_squared > R * R + closest_error) return false;
-  if (earliest) *earliest = t0_;
-  return true;
+  if (c.distance_squared > R * R + closest_error) return PairTest::disjoint();
+  return PairTest::possible_from(t0_);
 }
 
 }  // namespace ccd

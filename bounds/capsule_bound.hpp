@@ -17,7 +17,7 @@
 // both of which contain the body. Pair test: segment-segment distance (ccd/queries/
 // segment_segment.hpp) <= r1 + r2 (squared compare, with the rounding slack of rounding.hpp
 // on the radii and 16 ulps of |d1|^2 + |d2|^2 + |p1 - p2|^2 for the closest-pair error).
-// Conservative. `earliest` receives t0.
+// Conservative. `earliest` is t0.
 #include <bounds/bound.hpp>
 
 namespace ccd {
@@ -30,7 +30,7 @@ class CapsuleBound final : public Bound {
     double radius;  ///< r + e + slack
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
   const Capsule& capsule(std::uint32_t body) const { return capsules_[body]; }
 
  private:

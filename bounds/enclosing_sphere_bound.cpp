@@ -53,7 +53,7 @@ void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& bo
   }
 }
 
-bool EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+PairTest EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b) const {
   const Shape& x = shapes_[a];
   const Shape& y = shapes_[b];
   bool hit;
@@ -67,8 +67,7 @@ bool EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b, double* earlie
     const Shape& box = x.boxed ? x : y;
     hit = box_point_distance_squared(box.box, ball.centre) <= ball.radius * ball.radius;
   }
-  if (hit && earliest) *earliest = t0_;
-  return hit;
+  return hit ? PairTest::possible_from(t0_) : PairTest::disjoint();
 }
 
 }  // namespace ccd

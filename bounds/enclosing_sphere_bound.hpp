@@ -11,7 +11,7 @@
 // Walls: a body whose sphere of centres reaches a wall plane (min + r, max - r) may reflect;
 // it is replaced by its box, folded into the walls per axis (bounds/wall_fold.hpp), and the
 // pair test becomes sphere-box (squared distance from the centre to the box) or box-box.
-// Conservative whenever |acceleration| <= A (walls included). `earliest` receives t0.
+// Conservative whenever |acceleration| <= A (walls included). `earliest` is t0.
 #include <bounds/bound.hpp>
 
 namespace ccd {
@@ -25,7 +25,7 @@ class EnclosingSphereBound final : public Bound {
     Aabb box;
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
   const Shape& shape(std::uint32_t body) const { return shapes_[body]; }
 
  private:

@@ -21,17 +21,14 @@ void HornBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   }
 }
 
-bool HornBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+PairTest HornBound::test(std::uint32_t a, std::uint32_t b) const {
   const Trapezoid* za = traps_.data() + std::size_t{a} * m_;
   const Trapezoid* zb = traps_.data() + std::size_t{b} * m_;
   for (int j = 0; j < m_; ++j) {
-    const TrapezoidOverlap o = trapezoid_overlap(za[j], zb[j]);
-    if (o.status == TrapezoidOverlap::Status::Possible) {
-      if (earliest) *earliest = o.earliest;
-      return true;
-    }
+    const PairTest o = trapezoid_overlap(za[j], zb[j]);
+    if (o.possible()) return o;
   }
-  return false;
+  return PairTest::disjoint();
 }
 
 }  // namespace ccd

@@ -7,7 +7,7 @@
 // per sub-interval). Box: the hull of the trapezoids.
 // Pair test: trapezoid_overlap on each sub-interval in time order (the faces move
 // linearly: six half-lines in time); true at the first sub-interval where the two
-// trapezoids overlap, with `*earliest` = the earliest time of overlap (no contact is
+// trapezoids overlap, with `earliest` = the earliest time of overlap (no contact is
 // possible before it while the bound's assumption holds). O(M) per pair, no allocation.
 // Walls: a reflection is an unbounded acceleration, so an axis of a sub-interval on which
 // the horn's centre may pass a wall plane uses the static folded interval of that
@@ -24,7 +24,7 @@ class HornBound final : public Bound {
   static constexpr int default_pieces = 4;
   explicit HornBound(int pieces = default_pieces);
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
   int pieces() const { return m_; }
   /// Trapezoid j (sub-interval j, 0 <= j < M) of `body` from the last prepare.
   const Trapezoid& trapezoid(std::uint32_t body, int j) const { return traps_[std::size_t{body} * m_ + j]; }

@@ -48,19 +48,16 @@ OrientedTrapezoid HornSatBound::trapezoid(std::uint32_t body, int j) const {
   return {times_[j], times_[j + 1], frames_[body], e.c0, e.c1, e.h0, e.h1};
 }
 
-bool HornSatBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+PairTest HornSatBound::test(std::uint32_t a, std::uint32_t b) const {
   const SatFrames f(frames_[a], frames_[b]);
   const Ends* ea = ends_.data() + std::size_t{a} * m_;
   const Ends* eb = ends_.data() + std::size_t{b} * m_;
   for (int j = 0; j < m_; ++j) {
-    const TrapezoidOverlap o = oriented_overlap(f, times_[j], times_[j + 1], ea[j].c0, ea[j].c1, ea[j].h0,
+    const PairTest o = oriented_overlap(f, times_[j], times_[j + 1], ea[j].c0, ea[j].c1, ea[j].h0,
                                                 ea[j].h1, eb[j].c0, eb[j].c1, eb[j].h0, eb[j].h1);
-    if (o.status == TrapezoidOverlap::Status::Possible) {
-      if (earliest) *earliest = o.earliest;
-      return true;
-    }
+    if (o.possible()) return o;
   }
-  return false;
+  return PairTest::disjoint();
 }
 
 }  // namespace ccd

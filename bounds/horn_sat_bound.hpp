@@ -6,7 +6,7 @@
 // the axis-aligned one. Box: the world hull of the oriented trapezoids.
 // Pair test: per sub-interval in time order, the 15-axis SAT sweep of
 // bounds/oriented_trapezoid.hpp (projections linear in time; epsilon 1e-9 on |R_ij| for
-// near-parallel edge-cross axes, conservative); `*earliest` = the earliest possible contact.
+// near-parallel edge-cross axes, conservative); `earliest` = the earliest possible contact.
 // Zero (or < 1e-100) velocity: the axis-aligned frame.
 // Walls: a body whose horn may pass a wall plane during the step uses the axis-aligned frame
 // with the folded trapezoids of `horn:M` (conservative across reflections).
@@ -21,7 +21,7 @@ class HornSatBound final : public Bound {
   static constexpr int default_pieces = 4;
   explicit HornSatBound(int pieces = default_pieces);
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
   int pieces() const { return m_; }
   /// Oriented trapezoid j (0 <= j < M) of `body` from the last prepare.
   OrientedTrapezoid trapezoid(std::uint32_t body, int j) const;

@@ -22,7 +22,7 @@ SatFrames::SatFrames(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
   abs_r = r.cwiseAbs().array() + kSatParallelEpsilon;
 }
 
-TrapezoidOverlap oriented_overlap(const SatFrames& f, double t0, double t1, const Vec3& ca0, const Vec3& ca1,
+PairTest oriented_overlap(const SatFrames& f, double t0, double t1, const Vec3& ca0, const Vec3& ca1,
                                   const Vec3& ha0, const Vec3& ha1, const Vec3& cb0, const Vec3& cb1,
                                   const Vec3& hb0, const Vec3& hb1) {
   const Vec3 T0 = cb0 - ca0;
@@ -65,7 +65,7 @@ TrapezoidOverlap oriented_overlap(const SatFrames& f, double t0, double t1, cons
     }
   }
   u_lo = std::max(u_lo, 0.0);
-  return {TrapezoidOverlap::Status::Possible, t0 + u_lo * (t1 - t0)};
+  return {PairTest::Status::Possible, t0 + u_lo * (t1 - t0)};
 }
 
 Eigen::Matrix3d velocity_frame(const Vec3& v) {

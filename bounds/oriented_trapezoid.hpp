@@ -48,11 +48,11 @@ struct SatFrames {
 
 /// The SAT sweep of two boxes in the frames `f` (a's axes = f.a_axes, b's = f.b_axes) over
 /// the shared interval [t0, t1].
-TrapezoidOverlap oriented_overlap(const SatFrames& f, double t0, double t1, const Vec3& ca0, const Vec3& ca1,
+PairTest oriented_overlap(const SatFrames& f, double t0, double t1, const Vec3& ca0, const Vec3& ca1,
                                   const Vec3& ha0, const Vec3& ha1, const Vec3& cb0, const Vec3& cb1,
                                   const Vec3& hb0, const Vec3& hb1);
 
-inline TrapezoidOverlap oriented_trapezoid_overlap(const OrientedTrapezoid& a, const OrientedTrapezoid& b) {
+inline PairTest oriented_trapezoid_overlap(const OrientedTrapezoid& a, const OrientedTrapezoid& b) {
   const SatFrames f(a.axes, b.axes);
   return oriented_overlap(f, a.t0, a.t1, a.c0, a.c1, a.h0, a.h1, b.c0, b.c1, b.h0, b.h1);
 }

@@ -16,13 +16,12 @@ void SphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   }
 }
 
-bool SphereBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
+PairTest SphereBound::test(std::uint32_t a, std::uint32_t b) const {
   const Ball& x = balls_[a];
   const Ball& y = balls_[b];
   const double R = x.radius + y.radius;
-  if ((x.centre - y.centre).squaredNorm() > R * R) return false;
-  if (earliest) *earliest = t0_;
-  return true;
+  if ((x.centre - y.centre).squaredNorm() > R * R) return PairTest::disjoint();
+  return PairTest::possible_from(t0_);
 }
 
 }  // namespace ccd

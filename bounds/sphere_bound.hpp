@@ -3,7 +3,7 @@
 // Box: the sphere's AABB. Test: centre distance <= r1 + r2 (squared compare), i.e. the
 // exact overlap test at the sample time. Conservative at the sample time only: a discrete
 // method misses every contact that starts and ends between two samples.
-// `earliest` receives t0. Both sizes are widened by the rounding slack (rounding.hpp).
+// `earliest` is t0. Both sizes are widened by the rounding slack (rounding.hpp).
 #include <bounds/bound.hpp>
 
 namespace ccd {
@@ -11,7 +11,7 @@ namespace ccd {
 class SphereBound final : public Bound {
  public:
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
-  bool test(std::uint32_t a, std::uint32_t b, double* earliest) const override;
+  PairTest test(std::uint32_t a, std::uint32_t b) const override;
 
  private:
   struct Ball {

@@ -20,10 +20,9 @@ void SweptAabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   boxes_.assign(boxes.begin(), boxes.end());
 }
 
-bool SweptAabbBound::test(std::uint32_t a, std::uint32_t b, double* earliest) const {
-  if (!boxes_[a].overlaps(boxes_[b])) return false;
-  if (earliest) *earliest = t0_;
-  return true;
+PairTest SweptAabbBound::test(std::uint32_t a, std::uint32_t b) const {
+  if (!boxes_[a].overlaps(boxes_[b])) return PairTest::disjoint();
+  return PairTest::possible_from(t0_);
 }
 
 }  // namespace ccd

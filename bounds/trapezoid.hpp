@@ -10,8 +10,9 @@
 // parameter, widened outwards: conservative). On each axis, "hi_a(t) >= lo_b(t)" and
 // "hi_b(t) >= lo_a(t)" are linear inequalities in t; intersecting the six half-lines with
 // [t0, t1] gives the set of times at which the boxes overlap (closed: touching counts).
-// Non-empty: status Possible and `earliest` = its lower end (a time before which the two
-// boxes are disjoint). Empty: status Disjoint, `earliest` = +infinity.
+// The answer is a bound's PairTest (bounds/bound.hpp): non-empty: status Possible and
+// `earliest` = its lower end (a time before which the two boxes are disjoint). Empty:
+// status Disjoint, `earliest` = +infinity.
 // Both trapezoids must share [t0, t1] (the caller's sub-intervals are the same).
 #include <bounds/bound.hpp>
 #include <ccd/geometry/aabb.hpp>
@@ -37,12 +38,6 @@ struct Trapezoid {
   Aabb hull() const { return {lo0.cwiseMin(lo1), hi0.cwiseMax(hi1)}; }
 };
 
-struct TrapezoidOverlap {
-  enum class Status { Disjoint, Possible };
-  Status status = Status::Disjoint;
-  double earliest = std::numeric_limits<double>::infinity();  ///< lower end of the overlap times
-};
-
 namespace detail {
 // Restricts [u_lo, u_hi] to where the linear function with values f0 at u = 0 and f1 at
 // u = 1 is >= 0. The crossing parameter is widened by 4 ulps (conservative).
@@ -58,7 +53,7 @@ inline void clip_nonnegative(double f0, double f1, double& u_lo, double& u_hi) {
 }
 }  // namespace detail
 
-inline TrapezoidOverlap trapezoid_overlap(const Trapezoid& a, const Trapezoid& b) {
+inline PairTest trapezoid_overlap(const Trapezoid& a, const Trapezoid& b) {
   double u_lo = 0.0;
   double u_hi = 1.0;
   for (int k = 0; k < 3; ++k) {
@@ -67,7 +62,7 @@ inline TrapezoidOverlap trapezoid_overlap(const Trapezoid& a, const Trapezoid& b
     if (u_lo > u_hi) return {};
   }
   u_lo = std::max(u_lo, 0.0);
-  return {TrapezoidOverlap::Status::Possible, a.t0 + u_lo * (a.t1 - a.t0)};
+  return {PairTest::Status::Possible, a.t0 + u_lo * (a.t1 - a.t0)};
 }
 
 /// Writes the `m` trapezoids covering the horn of a body with state `s` at t0 over equal

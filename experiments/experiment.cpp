@@ -2,6 +2,7 @@
 
 #include "method.hpp"
 
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
@@ -16,37 +17,27 @@ namespace ccdlab {
 namespace {
 
 using nlohmann::json;
+using ccd::JsonReader;
 
-[[noreturn]] void fail(const std::string& file, const std::string& field, const std::string& what) {
-  throw ccd::InputError(file, field, what);
-}
-
-double positive_number(const json& v, const std::string& file, const std::string& field) {
-  if (!v.is_number()) fail(file, field, "must be a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x) || x <= 0.0) fail(file, field, "must be a finite number > 0");
+double positive_number(const JsonReader& r, const json& v, const std::string& field) {
+  const double x = r.number(v, field);
+  if (x <= 0.0) r.fail(field, "must be a finite number > 0");
   return x;
 }
 
-std::vector<double> parse_dt(const json& j, const std::string& file) {
+std::vector<double> parse_dt(const JsonReader& r, const json& j) {
   std::vector<double> dt;
   if (j.is_array()) {
-    if (j.empty()) fail(file, "dt", "must not be empty");
-    for (std::size_t i = 0; i < j.size(); ++i)
-      dt.push_back(positive_number(j[i], file, "dt[" + std::to_string(i) + "]"));
+    if (j.empty()) r.fail("dt", "must not be empty");
+    for (std::size_t i = 0; i < j.size(); ++i) dt.push_back(positive_number(r, j[i], "dt[" + std::to_string(i) + "]"));
   } else if (j.is_object()) {
-    for (const char* k : {"from", "to", "count"})
-      if (!j.contains(k)) fail(file, std::string("dt.") + k, "missing required field");
-    const double from = positive_number(j["from"], file, "dt.from");
-    const double to = positive_number(j["to"], file, "dt.to");
-    if (!j["count"].is_number_integer() || j["count"].get<long long>() < 1 || j["count"].get<long long>() > 100000)
-      fail(file, "dt.count", "must be an integer in [1, 100000]");
-    const int count = j["count"].get<int>();
+    const double from = positive_number(r, r.require(j, "from", "dt"), "dt.from");
+    const double to = positive_number(r, r.require(j, "to", "dt"), "dt.to");
+    const auto count = static_cast<int>(r.integer(r.require(j, "count", "dt"), "dt.count", 1, 100000));
     std::string spacing = "log";
     if (j.contains("spacing")) {
-      if (!j["spacing"].is_string()) fail(file, "dt.spacing", "must be \"log\" or \"linear\"");
-      spacing = j["spacing"].get<std::string>();
-      if (spacing != "log" && spacing != "linear") fail(file, "dt.spacing", "must be \"log\" or \"linear\"");
+      spacing = r.string(j["spacing"], "dt.spacing");
+      if (spacing != "log" && spacing != "linear") r.fail("dt.spacing", "must be \"log\" or \"linear\"");
     }
     if (count == 1) {
       dt.push_back(from);
@@ -61,7 +52,7 @@ std::vector<double> parse_dt(const json& j, const std::string& file) {
       }
     }
   } else {
-    fail(file, "dt", "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
+    r.fail("dt", "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
   }
   std::sort(dt.begin(), dt.end(), std::greater<>());
   dt.erase(std::unique(dt.begin(), dt.end()), dt.end());
@@ -71,22 +62,20 @@ std::vector<double> parse_dt(const json& j, const std::string& file) {
 }  // namespace
 
 Experiment experiment_from_json(const json& j, const std::string& file) {
-  if (!j.is_object()) fail(file, "", "an experiment must be a JSON object");
-  if (!j.contains("format")) fail(file, "format", "missing required field");
-  if (!j["format"].is_string() || j["format"].get<std::string>() != "ccdlab-experiment/1")
-    fail(file, "format", "must be \"ccdlab-experiment/1\"");
+  const JsonReader r{file};
+  if (!j.is_object()) r.fail("", "an experiment must be a JSON object");
+  if (r.string(r.require(j, "format", ""), "format") != "ccdlab-experiment/1")
+    r.fail("format", "must be \"ccdlab-experiment/1\"");
   Experiment e;
   if (j.contains("name")) {
-    if (!j["name"].is_string()) fail(file, "name", "must be a string");
-    e.name = j["name"].get<std::string>();
+    e.name = r.string(j["name"], "name");
     // The name becomes a file name (results/NAME.json): never a path.
     if (e.name.empty() || e.name.size() > 200 || e.name.front() == '.' || e.name.front() == '-' ||
         !std::all_of(e.name.begin(), e.name.end(), [](char c) {
           return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
         }))
-      fail(file, "name",
-           "'" + e.name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not starting "
-           "with '.' or '-' (the default results file is results/NAME.json)");
+      r.fail("name", "'" + e.name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not "
+                     "starting with '.' or '-' (the default results file is results/NAME.json)");
   } else {
     // The file's stem, with anything but letters, digits, '.', '_' and '-' made '_'.
     e.name = std::filesystem::path(file).stem().string().substr(0, 200);
@@ -95,50 +84,48 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
     if (e.name.empty()) e.name = "experiment";
     if (e.name.front() == '.' || e.name.front() == '-') e.name.front() = '_';
   }
-  if (!j.contains("scene")) fail(file, "scene", "missing required field");
-  const json& scene = j["scene"];
+  const json& scene = r.require(j, "scene", "");
   if (scene.is_string()) {
     e.scene_path = scene.get<std::string>();
-    if (e.scene_path.empty()) fail(file, "scene", "must not be empty");
+    if (e.scene_path.empty()) r.fail("scene", "must not be empty");
   } else if (scene.is_object()) {
     if (!scene.contains("generator") || !scene["generator"].is_string())
-      fail(file, "scene.generator", "missing required field (a generator name)");
+      r.fail("scene.generator", "missing required field (a generator name)");
     e.scene_generator = scene;
   } else {
-    fail(file, "scene", "must be a scene file path or {\"generator\": NAME, ...}");
+    r.fail("scene", "must be a scene file path or {\"generator\": NAME, ...}");
   }
-  if (!j.contains("dt")) fail(file, "dt", "missing required field");
-  e.dt = parse_dt(j["dt"], file);
-  if (!j.contains("methods")) fail(file, "methods", "missing required field");
-  const json& methods = j["methods"];
-  if (!methods.is_array() || methods.empty()) fail(file, "methods", "must be a non-empty array of method names");
+  e.dt = parse_dt(r, r.require(j, "dt", ""));
+  const json& methods = r.require(j, "methods", "");
+  if (!methods.is_array() || methods.empty()) r.fail("methods", "must be a non-empty array of method names");
+  std::vector<json> identities;  // each method resolved, parallel to e.methods
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const std::string field = "methods[" + std::to_string(i) + "]";
-    if (!methods[i].is_string()) fail(file, field, "must be a string BOUND/BROADPHASE");
+    if (!methods[i].is_string()) r.fail(field, "must be a string BOUND/BROADPHASE");
+    MethodSpec m;
     try {
-      e.methods.push_back(parse_method(methods[i].get<std::string>()).name);
+      m = parse_method(methods[i].get<std::string>());
     } catch (const std::invalid_argument& err) {
-      fail(file, field, err.what());
+      r.fail(field, err.what());
     }
-    // Compared by canonical name: "horn/grid", "horn:4/grid" and "horn:04/grid" are one method.
-    const auto first = std::find(e.methods.begin(), e.methods.end(), e.methods.back());
-    if (first != e.methods.end() - 1)
-      fail(file, field,
-           "method '" + methods[i].get<std::string>() + "' is '" + e.methods.back() + "', already listed as methods[" +
-               std::to_string(first - e.methods.begin()) + "]");
+    // Compared as resolved, every option filled in: "horn/grid", "horn:4/grid" and
+    // "horn:04/grid" are one method, spelled three ways.
+    json resolved = {std::string(m.bound.info->name), m.bound.options.to_json(), std::string(m.broad_phase.info->name),
+                     m.broad_phase.options.to_json()};
+    const auto first = std::find(identities.begin(), identities.end(), resolved);
+    if (first != identities.end())
+      r.fail(field, "method '" + m.name + "' is the same method as methods[" +
+                        std::to_string(first - identities.begin()) + "] ('" +
+                        e.methods[static_cast<std::size_t>(first - identities.begin())] + "')");
+    identities.push_back(std::move(resolved));
+    e.methods.push_back(m.name);
   }
   if (j.contains("acceleration_bound") && !j["acceleration_bound"].is_null()) {
-    const json& a = j["acceleration_bound"];
-    if (!a.is_number() || !std::isfinite(a.get<double>()) || a.get<double>() < 0.0 ||
-        a.get<double>() > ccd::kMaxSceneMagnitude)
-      fail(file, "acceleration_bound", "must be a number in [0, 1e+30]");
-    e.acceleration_bound = a.get<double>();
+    e.acceleration_bound = r.number(j["acceleration_bound"], "acceleration_bound");
+    if (e.acceleration_bound < 0.0 || e.acceleration_bound > ccd::kMaxSceneMagnitude)
+      r.fail("acceleration_bound", "must be a number in [0, 1e+30]");
   }
-  if (j.contains("repeats")) {
-    if (!j["repeats"].is_number_integer() || j["repeats"].get<long long>() < 1 || j["repeats"].get<long long>() > 1000)
-      fail(file, "repeats", "must be an integer in [1, 1000]");
-    e.repeats = j["repeats"].get<int>();
-  }
+  if (j.contains("repeats")) e.repeats = static_cast<int>(r.integer(j["repeats"], "repeats", 1, 1000));
   e.source = j;
   return e;
 }
@@ -157,10 +144,11 @@ void check_dt_against_horizon(const Experiment& e, double horizon, const std::st
   auto text = [](double x) { return json(x).dump(); };
   for (std::size_t i = 0; i < e.dt.size(); ++i) {
     if (e.dt[i] > horizon)
-      fail(file, "dt", "timestep " + text(e.dt[i]) + " is larger than the scene's horizon " + text(horizon));
+      throw ccd::InputError(file, "dt", "timestep " + text(e.dt[i]) + " is larger than the scene's horizon " + text(horizon));
     if (horizon / e.dt[i] > kMaxStepsPerJob)
-      fail(file, "dt",
-           "timestep " + text(e.dt[i]) + " is below what the horizon " + text(horizon) +
+      throw ccd::InputError(
+          file, "dt",
+          "timestep " + text(e.dt[i]) + " is below what the horizon " + text(horizon) +
                " can resolve: more than 2^52 steps, where consecutive sample times k dt are no longer distinct "
                "(smallest dt: horizon * 2^-52 = " + text(horizon * 0x1p-52) + ")");
   }

@@ -16,26 +16,23 @@ MethodSpec parse_method(std::string_view name) {
                                 "' is not of the form BOUND/BROADPHASE; valid methods: " + valid);
   }
   MethodSpec m;
+  m.name = std::string(name);
   m.bound = ccd::parse_bound(name.substr(0, slash));
-  m.broad_phase = &ccd::find_broad_phase(name.substr(slash + 1));
-  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on "x" + std::string.
-  m.name = std::string(m.bound.info->name);
-  if (m.bound.info->parameterised) {
-    m.name.push_back(':');
-    m.name.append(std::to_string(m.bound.parameter));
-  }
-  m.name.push_back('/');
-  m.name.append(m.broad_phase->name);
+  m.broad_phase = ccd::parse_broad_phase(name.substr(slash + 1));
   return m;
+}
+
+nlohmann::json options_json(const MethodSpec& method) {
+  return {{"bound", method.bound.options.to_json()}, {"broad_phase", method.broad_phase.options.to_json()}};
 }
 
 std::vector<std::string> all_method_names() {
   std::vector<std::string> out;
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string bound(b.name);
-    if (b.parameterised) {
+    if (!b.parameters.empty()) {  // the first option's default, as ":M"
       bound += ':';
-      bound += std::to_string(b.default_parameter);
+      bound += ccd::format_number(b.parameters[0].default_value);
     }
     for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry()) out.push_back(bound + "/" + std::string(p.name));
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Reading `ccdlab-results/1` files back (docs/experiments.md) and joining the shards of one
+// Reading `ccdlab-results/2` files back (docs/experiments.md) and joining the shards of one
 // run (`ccdlab merge`). A results file is checked as strictly as an experiment: every field
 // the writer writes must be there with its type (records against the fields of
 // to_json(RunRecord), so the check follows the writer), the experiment must parse as one,
@@ -21,7 +21,7 @@ struct ResultsShard {
 };
 
 /// Validates every shard, checks that they are of the same experiment, the same scene
-/// (scene summary and digest) and the same ground truth, split the same N ways, each shard
+/// (scene summary and truth.scene_sha256) and the same ground truth, split the same N ways, each shard
 /// once and none missing; returns one results file ordered by job (shard 1/1, with
 /// `merged_from`; peak memory the largest of the shards). Throws ccd::InputError naming the
 /// file and the field.

@@ -5,8 +5,12 @@
 #include "progress.hpp"
 #include "runner.hpp"
 
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
+#include <ccd/util/parallel_for.hpp>
+#include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
 
 #include <algorithm>
@@ -15,7 +19,6 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 namespace ccdlab {
 
@@ -52,8 +55,7 @@ json scene_summary(const Experiment& e, const ccd::Scene& s, const ccd::Trajecto
             {"radius_min", rmin},
             {"radius_max", rmax},
             {"max_acceleration", s.max_acceleration()},
-            {"trajectory_pieces", traj.total_pieces()},
-            {"digest", ccd::scene_digest(s)}};
+            {"trajectory_pieces", traj.total_pieces()}};
   if (s.box)
     j["box"] = {{"min", {s.box->min.x(), s.box->min.y(), s.box->min.z()}},
                 {"max", {s.box->max.x(), s.box->max.y(), s.box->max.z()}}};
@@ -67,6 +69,27 @@ std::string job_label(const std::string& method, double dt) {
 }
 
 }  // namespace
+
+bool check_stored_truth(const ccd::TruthFile& truth, const ccd::Scene& scene, const std::string& file) {
+  if (truth.version >= 2) {
+    const std::string digest = ccd::scene_digest(scene);
+    if (truth.scene_sha256 != digest)
+      throw ccd::InputError(file, "scene_sha256",
+                            "this is the ground truth of another scene (" + truth.scene_sha256.substr(0, 12) +
+                                "..., the experiment's scene is " + digest.substr(0, 12) +
+                                "...); compute it with `ccdlab truth SCENE.json -o FILE`");
+  }
+  if (truth.horizon != scene.horizon)
+    throw ccd::InputError(file, "horizon",
+                          "is " + ccd::format_number(truth.horizon) + ", the experiment's scene runs to " +
+                              ccd::format_number(scene.horizon));
+  for (std::size_t i = 0; i < truth.events.size(); ++i)
+    if (truth.events[i].b >= scene.bodies.size())
+      throw ccd::InputError(file, "events[" + std::to_string(i) + "].b",
+                            "body " + std::to_string(truth.events[i].b) + " does not exist (the scene has " +
+                                std::to_string(scene.bodies.size()) + " bodies)");
+  return truth.version >= 2;
+}
 
 json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options) {
   struct Job {
@@ -84,12 +107,13 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
 
   Progress progress(jobs.size(), options.quiet);
   progress.phase("scene: " + std::to_string(scene.bodies.size()) + " bodies, horizon " +
-                 std::to_string(scene.horizon) + " s; computing exact ground truth");
+                 std::to_string(scene.horizon) + " s; " +
+                 (options.truth ? "ground truth from " + options.truth_file : std::string("computing exact ground truth")));
   const auto t0 = std::chrono::steady_clock::now();
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
   topts.threads = options.threads;
-  const TruthIndex truth(ccd::compute_truth(traj, topts));
+  const TruthIndex truth(options.truth ? options.truth->events : ccd::compute_truth(traj, topts));
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -109,33 +133,30 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.cancel = options.cancel;
 
   std::vector<RunRecord> records(jobs.size());
-  std::atomic<std::size_t> next{0};
-  auto worker = [&] {
-    for (std::size_t i; (i = next.fetch_add(1)) < jobs.size();) {
-      if (options.cancel && options.cancel->load()) return;
-      records[i] = run_method(in, jobs[i].method, jobs[i].dt);
-      progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {
+    if (options.cancel && options.cancel->load()) {
+      records[i].cancelled = true;
+      return;
     }
-  };
-  const int threads = std::max(1, std::min<int>(options.threads, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
+    records[i] = run_method(in, jobs[i].method, jobs[i].dt);
+    progress.done(job_label(jobs[i].method.name, jobs[i].dt));
+  });
   progress.finish();
   if (options.cancel && options.cancel->load()) return json();
   for (const RunRecord& r : records)
     if (r.cancelled) return json();
 
   json out;
-  out["format"] = "ccdlab-results/1";
+  out["format"] = "ccdlab-results/2";
   out["experiment"] = experiment_to_json(e);
   out["experiment"]["acceleration_bound_used"] = in.acceleration_bound;
   out["scene"] = scene_summary(e, scene, traj);
   out["truth"] = {{"events", truth.events().size()},
                   {"tangent_events", tangent},
                   {"pairs", pairs.size()},
-                  {"seconds", truth_seconds}};
+                  {"seconds", truth_seconds},
+                  {"source", options.truth ? options.truth_file : std::string("computed")},
+                  {"scene_sha256", ccd::scene_digest(scene)}};
   out["environment"] = environment_json(options.threads);
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();

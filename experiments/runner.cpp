@@ -1,12 +1,15 @@
 #include "runner.hpp"
 
-#include <ccd/truth/contact_function.hpp>
-#include <ccd/truth/pair_contact.hpp>
+#include <ccd/motion/state_cursor.hpp>
+#include <ccd/narrow/sphere_sphere_narrow.hpp>
+#include <ccd/pipeline/step_pipeline.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -16,39 +19,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-const char* knowledge_name(ccd::Knowledge k) {
-  switch (k) {
-    case ccd::Knowledge::Instant: return "instant";
-    case ccd::Knowledge::Exact: return "exact";
-    case ccd::Knowledge::Bounded: return "bounded";
-  }
-  return "unknown";
-}
-
-// Evaluates every body's state at monotonically increasing times with one cursor per
-// body into its pieces (no binary search per step).
-class StateCursor {
- public:
-  explicit StateCursor(const ccd::Trajectories& t) : traj_(t), cursor_(t.size(), 0) {}
-  void evaluate(double t, std::vector<ccd::BodyState>& out) {
-    out.resize(traj_.size());
-    for (std::size_t i = 0; i < traj_.size(); ++i) {
-      const auto ps = traj_.pieces(i);
-      std::size_t& c = cursor_[i];
-      while (c + 1 < ps.size() && t >= ps[c].t1) ++c;
-      out[i] = {ps[c].position(t), ps[c].velocity(t), traj_.radius(i)};
-    }
-  }
-  /// Index of the piece of `body` used at the last evaluated time.
-  std::size_t piece(std::size_t body) const { return cursor_[body]; }
-
- private:
-  const ccd::Trajectories& traj_;
-  std::vector<std::size_t> cursor_;
-};
-
 struct Counts {
-  std::uint64_t candidates = 0, bound_candidates = 0, confirmed = 0, false_positives = 0, swaps = 0;
+  std::uint64_t candidates = 0, bound_candidates = 0, confirmed = 0, false_positives = 0;
+  std::map<std::string, std::uint64_t, std::less<>> counters;  // the broad phase's own, summed over steps
   std::uint64_t rebuilds = 0;  // steps at which the broad phase built its structure from scratch
   std::uint64_t unexpected = 0;
   double bound_s = 0, broad_s = 0, narrow_s = 0, total_s = 0;
@@ -62,7 +35,7 @@ struct Counts {
       return true;
     };
     return candidates == o.candidates && bound_candidates == o.bound_candidates && confirmed == o.confirmed &&
-           false_positives == o.false_positives && unexpected == o.unexpected && swaps == o.swaps &&
+           false_positives == o.false_positives && unexpected == o.unexpected && counters == o.counters &&
            rebuilds == o.rebuilds && same(lag, o.lag);
   }
 };
@@ -75,17 +48,10 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   // Times are matched with this slack: the truth is accurate to 1e-9 relative to T.
   const double slack = 1e-9 * T;
 
-  auto bound = method.bound.make();
-  auto broad = method.broad_phase->make();
+  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make());
   std::vector<ccd::BodyState> states;
-  std::vector<ccd::Aabb> boxes;
-  std::vector<ccd::BodyPair> pairs, passed;
-  struct Confirmed {
-    ccd::BodyPair pair;
-    double when;  // sample time, or first contact time in the step
-  };
-  std::vector<Confirmed> confirmed;
-  StateCursor cursor(traj);
+  ccd::StepResult step;
+  ccd::StateCursor cursor(traj);
 
   Counts c;
   const std::size_t n_events = truth.events().size();
@@ -114,50 +80,29 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
     ctx.t1 = t1;
     ctx.start = states;
 
-    auto t = Clock::now();
-    bound->prepare(ctx, boxes);
-    c.bound_s += seconds_since(t);
-
-    t = Clock::now();
-    broad->find_pairs(boxes, pairs);
-    const double broad_step_s = seconds_since(t);
-    c.broad_s += broad_step_s;
-    if (k == 0) c.first_broad_s = broad_step_s;
-    c.swaps += broad->stats().swaps;
-    if (broad->stats().rebuilt) ++c.rebuilds;
-    c.candidates += pairs.size();
-
-    // The bound's own test over all broad-phase pairs, then the exact narrow phase over
-    // the survivors: two passes, so that each is timed once per step, not per pair.
-    t = Clock::now();
-    passed.clear();
-    for (const ccd::BodyPair& p : pairs) {
-      double earliest = t0;
-      if (bound->test(p.a, p.b, &earliest)) passed.push_back(p);
+    ccd::StepTimes times;
+    pipeline.run(ctx, traj, step, &times, cursor.pieces());
+    c.bound_s += times.bound;
+    c.broad_s += times.broad;
+    c.narrow_s += times.narrow;
+    if (k == 0) c.first_broad_s = times.broad;
+    for (const ccd::Counter& counter : pipeline.broad_phase().counters()) {
+      auto it = c.counters.find(counter.name);
+      if (it == c.counters.end()) it = c.counters.emplace(std::string(counter.name), 0).first;
+      it->second += counter.value;
     }
-    c.bound_s += seconds_since(t);
-    c.bound_candidates += passed.size();
+    if (step.broad_stats.rebuilt) ++c.rebuilds;
+    c.candidates += step.candidates.size();
+    c.bound_candidates += step.passed.size();
+    c.confirmed += step.contacts.size();
+    c.false_positives += step.passed.size() - step.contacts.size();
 
-    t = Clock::now();
-    confirmed.clear();
-    for (const ccd::BodyPair& p : passed) {
-      if (continuous) {
-        const auto toi = ccd::pair_first_contact(traj, p.a, p.b, t0, t1);
-        if (toi) confirmed.push_back({p, *toi});
-      } else if (ccd::in_contact(traj, p.a, cursor.piece(p.a), p.b, cursor.piece(p.b), t0)) {
-        // The truth's own definition of touching (ccd/truth/contact_function.hpp).
-        confirmed.push_back({p, t0});
-      }
-    }
-    c.narrow_s += seconds_since(t);
-    c.confirmed += confirmed.size();
-    c.false_positives += passed.size() - confirmed.size();
-
-    // Bookkeeping against the truth (not timed).
-    for (const Confirmed& cf : confirmed) {
-      const ccd::BodyPair p = cf.pair;
-      const double when = cf.when;
-      const double R = states[p.a].radius + states[p.b].radius;
+    // Bookkeeping against the truth (not timed). A contact's time is the sample time
+    // (discrete) or the first contact in the step (continuous); its penetration is minus
+    // the narrow phase's signed distance.
+    for (const ccd::PairContact& pc : step.contacts) {
+      const ccd::BodyPair p = pc.pair;
+      const double when = pc.contact.toi;
       bool matched = false;
       for (std::uint32_t e : truth.of_pair(p.a, p.b)) {
         const ccd::ContactEvent& ev = truth.events()[e];
@@ -169,12 +114,13 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
         if (std::isnan(c.lag[e])) {
           // A continuous method confirms the pair from its first contact in the step on;
           // an event that starts later in the same step (the pair was already touching
-          // at the step's start from an earlier event) is detected at its own start.
+          // at the step's start from an earlier event) is detected at its own start, where
+          // the same signed distance is evaluated.
           const double at = continuous ? std::max(when, ev.enter) : when;
-          const ccd::Vec3 d = continuous ? ccd::Vec3(traj.position(p.a, at) - traj.position(p.b, at))
-                                         : ccd::Vec3(states[p.a].position - states[p.b].position);
+          const double signed_distance =
+              at == when ? pc.contact.signed_distance : ccd::sphere_signed_distance(traj, p.a, p.b, at);
           c.lag[e] = std::max(0.0, at - ev.enter);
-          c.penetration[e] = std::max(0.0, R - d.norm());
+          c.penetration[e] = std::max(0.0, -signed_distance);
         }
       }
       if (!matched) ++c.unexpected;
@@ -206,8 +152,9 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   RunRecord r;
   r.method = method.name;
   r.bound = method.name.substr(0, method.name.find('/'));
-  r.broad_phase = std::string(method.broad_phase->name);
-  r.knowledge = knowledge_name(method.bound.info->knowledge);
+  r.broad_phase = std::string(method.broad_phase.info->name);
+  r.options = options_json(method);
+  r.knowledge = std::string(ccd::to_string(method.bound.info->knowledge));
   r.continuous = method.continuous();
   r.conservative = method.bound.info->conservative;
   r.dt = dt;
@@ -261,7 +208,7 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.bound_candidates = c.bound_candidates;
   r.confirmed = c.confirmed;
   r.false_positives = c.false_positives;
-  r.sap_swaps = c.swaps;
+  r.counters.assign(c.counters.begin(), c.counters.end());
   r.self_check_unexpected = c.unexpected;
   r.rebuilds = c.rebuilds;
   std::vector<double> b, br, fb, n, t;
@@ -281,10 +228,21 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   return r;
 }
 
+namespace {
+
+nlohmann::json counters_json(const std::vector<std::pair<std::string, std::uint64_t>>& counters) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : counters) j[name] = value;
+  return j;
+}
+
+}  // namespace
+
 nlohmann::json to_json(const RunRecord& r) {
   return {{"method", r.method},
           {"bound", r.bound},
           {"broad_phase", r.broad_phase},
+          {"options", r.options},
           {"knowledge", r.knowledge},
           {"continuous", r.continuous},
           {"conservative", r.conservative},
@@ -310,7 +268,7 @@ nlohmann::json to_json(const RunRecord& r) {
           {"total_seconds", r.total_seconds},
           {"seconds_per_simulated_second", r.seconds_per_simulated_second},
           {"first_broad_seconds", r.first_broad_seconds},
-          {"sap_swaps", r.sap_swaps},
+          {"counters", counters_json(r.counters)},
           {"rebuilds", r.rebuilds},
           {"self_check",
            {{"ok", r.self_check_unexpected == 0 && r.self_check_undetected == 0 && r.counts_stable},

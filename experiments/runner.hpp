@@ -1,6 +1,7 @@
 #pragma once
 // Runs one method at one timestep over a scene and measures it against exact ground
-// truth (definitions in docs/experiments.md):
+// truth (definitions in docs/experiments.md). Each step is one call of the step pipeline
+// (ccd/pipeline/step_pipeline.hpp); this file only counts, times and matches:
 //  - samples t_k = k * dt (the product in double, never accumulated), every k >= 0 with
 //    t_k <= T (sample_count);
 //  - a discrete method (an Instant bound) checks overlap at each sample: an event is
@@ -18,6 +19,8 @@
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace ccdlab {
 
@@ -34,6 +37,7 @@ struct RunRecord {
   std::string method;
   std::string bound;
   std::string broad_phase;
+  nlohmann::json options;      ///< what the method ran with: {"bound": {...}, "broad_phase": {...}}
   std::string knowledge;       ///< instant | exact | bounded
   bool continuous = false;
   bool conservative = false;   ///< the bound's claim under its knowledge
@@ -47,7 +51,7 @@ struct RunRecord {
   std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
   std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
   std::uint64_t false_positives = 0;   ///< bound candidates with no contact at the sample/in the step
-  double max_penetration = 0.0;        ///< largest r_a + r_b - |d| at first detection
+  double max_penetration = 0.0;        ///< largest -signed distance (narrow phase) at first detection
   double mean_penetration = 0.0;
   double mean_lag = 0.0;               ///< mean detection time - enter over detected events
   double max_lag = 0.0;
@@ -57,7 +61,9 @@ struct RunRecord {
   double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
   double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
   double seconds_per_simulated_second = 0.0;
-  std::uint64_t sap_swaps = 0;         ///< insertion-sort swaps summed over steps (sap, sweep; else 0)
+  /// The broad phase's own counters (ccd::BroadPhase::counters), each summed over steps,
+  /// by name (e.g. sap's and sweep's "swaps"; none for grid).
+  std::vector<std::pair<std::string, std::uint64_t>> counters;
   std::uint64_t rebuilds = 0;          ///< steps at which the broad phase built its structure from scratch
                                        ///< (every step for brute, grid, hgrid, rtree)
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have

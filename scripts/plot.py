@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Charts of a ccdlab results file (ccdlab-results/1), as PNG and SVG.
+"""Charts of a ccdlab results file (ccdlab-results/2), as PNG and SVG.
 
 usage: /usr/bin/python3 scripts/plot.py RESULTS.json [-o DIR] [--format png,svg]
 
@@ -38,8 +38,8 @@ def load(path):
             res = json.load(f)
     except (OSError, json.JSONDecodeError) as e:
         fail(f"{path}: {e}")
-    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/1":
-        fail(f"{path}: format: not a ccdlab-results/1 file")
+    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/2":
+        fail(f"{path}: format: not a ccdlab-results/2 file")
     for i, r in enumerate(res.get("records", [])):
         for k in ("method", "dt", "missed_fraction", "false_positives_per_step",
                   "seconds_per_simulated_second", "continuous", "max_penetration"):
@@ -146,7 +146,7 @@ def speed_accuracy(res, outdir, formats):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of a ccdlab results file (PNG and SVG).")
-    ap.add_argument("results", help="a ccdlab-results/1 file written by `ccdlab run`")
+    ap.add_argument("results", help="a ccdlab-results/2 file written by `ccdlab run`")
     ap.add_argument("-o", "--output", help="output folder (default: RESULTS-plots next to the file)")
     ap.add_argument("--format", default="png,svg", help="comma-separated formats (default png,svg)")
     args = ap.parse_args(argv)

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Charts and a summary table of one stability study (docs/studies.md), combining the
-results files of its experiments (ccdlab-results/1).
+results files of its experiments (ccdlab-results/2).
 
 usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--format png,svg]
                                               [--ccdlab PATH]
@@ -42,6 +42,11 @@ def source(res):
 
 def per_step(r, key):
     return r[key] / r["steps"] if r["steps"] else 0.0
+
+
+def swaps_per_step(r):
+    """The broad phase's "swaps" counter per step (0 for methods without it)."""
+    return r.get("counters", {}).get("swaps", 0) / r["steps"] if r["steps"] else 0.0
 
 
 def save(fig, outdir, stem, formats):
@@ -160,11 +165,11 @@ def sap_coherence(results, outdir, formats):
         for ax, b in zip(axes, present):
             rs = by[b]
             xs = [r["dt"] for r in rs]
-            ax.plot(xs, [per_step(r, "sap_swaps") for r in rs], label=f"N = {n}", **st)
+            ax.plot(xs, [swaps_per_step(r) for r in rs], label=f"N = {n}", **st)
             ax.axhline(swap_budget(b, n), color=st["color"], linestyle=":", linewidth=1)
             lost = [r for r in rs if r["rebuilds"] > 1]
             if lost:
-                ax.scatter([r["dt"] for r in lost], [per_step(r, "sap_swaps") for r in lost], s=90,
+                ax.scatter([r["dt"] for r in lost], [swaps_per_step(r) for r in lost], s=90,
                            facecolors="none", edgecolors="red", zorder=4)
         for b, ls in zip(present, ("-", "--")):
             rs = by[b]
@@ -183,7 +188,7 @@ def sap_coherence(results, outdir, formats):
                 if r is None:
                     cells += ["", "", "", ""]
                 else:
-                    cells += [f"{per_step(r, 'sap_swaps'):.0f}", str(r["rebuilds"]),
+                    cells += [f"{swaps_per_step(r):.0f}", str(r["rebuilds"]),
                               f"{per_step(r, 'broad_seconds') * 1e3:.3g}", f"{r['first_broad_seconds'] * 1e3:.3g}"]
             gr = grid.get(d)
             cells += ([f"{per_step(gr, 'broad_seconds') * 1e3:.3g}", f"{gr['first_broad_seconds'] * 1e3:.3g}"]
@@ -459,7 +464,7 @@ def time_against(results, outdir, formats, stem, xkey, xlabel, title):
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
-    ap.add_argument("results", nargs="+", help="the study's ccdlab-results/1 files")
+    ap.add_argument("results", nargs="+", help="the study's ccdlab-results/2 files")
     ap.add_argument("-o", "--output", help="output folder (default results/studies/STUDY/plots)")
     ap.add_argument("--format", default="png", help="comma-separated formats (default png)")
     ap.add_argument("--ccdlab", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build",

@@ -10,6 +10,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ccd {
@@ -21,11 +22,18 @@ struct BodyPair {
   friend auto operator<=>(const BodyPair&, const BodyPair&) = default;
 };
 
-/// Statistics of the last find_pairs call; fields a method does not track stay 0.
+/// What every broad phase can say about its last find_pairs call; a field a method does
+/// not track stays 0.
 struct BroadPhaseStats {
-  std::uint64_t swaps = 0;          ///< sweep and prune: insertion-sort swaps this frame
   std::uint64_t box_tests = 0;      ///< box-box overlap tests performed
   bool rebuilt = false;             ///< the structure was built from scratch this frame
+};
+
+/// A method's own count for its last find_pairs call (e.g. `sap`'s insertion-sort
+/// "swaps"): the name is the key under which results files sum it over steps.
+struct Counter {
+  std::string_view name;
+  std::uint64_t value = 0;
 };
 
 class BroadPhase {
@@ -35,6 +43,9 @@ class BroadPhase {
   /// first. Boxes must be finite with lo <= hi.
   virtual void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) = 0;
   virtual BroadPhaseStats stats() const { return {}; }
+  /// The method's own counters for the last call (none by default); names are fixed per
+  /// method, so a caller may sum them by name over frames.
+  virtual std::span<const Counter> counters() const { return {}; }
 };
 
 }  // namespace ccd

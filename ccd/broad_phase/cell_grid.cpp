@@ -124,7 +124,7 @@ void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> 
   packed_.resize(n);
   if (level.empty()) {
     const unsigned t = threads_for(n, threads_);
-    run_parallel(t, [&](unsigned i) {
+    parallel_for(t, t, [&](std::size_t i, unsigned) {
       const std::size_t b = n * i / t, e = n * (i + 1) / t;
       for (std::size_t k = b; k < e; ++k) {
         const Aabb& box = boxes[k];
@@ -150,7 +150,7 @@ void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> 
     const std::uint32_t m = lv.end - lv.begin;
     const unsigned t = threads_for(m, threads_);
     if (thread_.size() < t) thread_.resize(t);
-    run_parallel(t, [&](unsigned i) {
+    parallel_for(t, t, [&](std::size_t i, unsigned) {
       std::vector<std::uint32_t>& keys = i == 0 ? cell_key_ : thread_[i].cell_key;
       std::vector<std::uint32_t>& starts = i == 0 ? cell_start_ : thread_[i].cell_start;
       if (i > 0) keys.clear(), starts.clear();
@@ -203,7 +203,7 @@ std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) 
   }
   if (thread_.size() < t) thread_.resize(t);
   std::vector<std::uint64_t> tests(t, 0);
-  run_parallel(t, [&](unsigned i) {
+  parallel_for(t, t, [&](std::size_t i, unsigned) {
     std::vector<BodyPair>& o = i == 0 ? out : thread_[i].pairs;
     if (i > 0) o.clear();
     tests[i] = same_level_cells(lv, bound[i], bound[i + 1], o);

@@ -35,14 +35,14 @@
 // body counts (only while each piece keeps >= kMinBodiesPerThread bodies); each thread
 // writes its own pair buffer and the buffers are appended in range order, so the pairs come
 // out in exactly the serial order whatever T is. The radix sort and the cross-level merge
-// stay serial. Threads are started per call (std::jthread): tens of microseconds, which is
-// why small inputs stay serial.
+// stay serial. Threads are started per call (ccd/util/parallel_for.hpp): tens of
+// microseconds, which is why small inputs stay serial.
 #include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/util/parallel_for.hpp>
 
 #include <array>
 #include <cstdint>
 #include <span>
-#include <thread>
 #include <vector>
 
 namespace ccd::detail {
@@ -65,11 +65,6 @@ inline constexpr std::size_t kMinBodiesPerThread = 16384;
 
 /// Threads to use for `items` units of work with at most `threads` threads.
 unsigned threads_for(std::size_t items, unsigned threads);
-
-/// Runs f(0) .. f(t - 1), f(0) on the calling thread, the others on new threads; returns
-/// when all are done.
-template <class F>
-void run_parallel(unsigned t, F&& f);
 
 /// The shape of a level of cell size `cell` over lower corners in [o, o + span].
 CellShape cell_shape(double cell, const std::array<double, 3>& span);
@@ -128,17 +123,5 @@ class CellGrid {
   };
   std::vector<ThreadBuffers> thread_;
 };
-
-template <class F>
-void run_parallel(unsigned t, F&& f) {
-  if (t <= 1) {
-    f(0u);
-    return;
-  }
-  std::vector<std::jthread> pool;
-  pool.reserve(t - 1);
-  for (unsigned i = 1; i < t; ++i) pool.emplace_back([&f, i] { f(i); });
-  f(0u);
-}  // the jthreads join here
 
 }  // namespace ccd::detail

@@ -17,7 +17,7 @@ void UniformGrid::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>&
   };
   const unsigned t = detail::threads_for(boxes.size(), std::max(1u, options_.threads));
   std::vector<Bounds> part(t);
-  detail::run_parallel(t, [&](unsigned i) {
+  parallel_for(t, t, [&](std::size_t i, unsigned) {
     const std::size_t b = boxes.size() * i / t, e = boxes.size() * (i + 1) / t;
     double lo0 = inf, lo1 = inf, lo2 = inf, hi0 = -inf, hi1 = -inf, hi2 = -inf, ext = 0.0;
     for (std::size_t k = b; k < e; ++k) {

@@ -15,31 +15,95 @@ namespace ccd {
 namespace {
 
 template <class T>
-std::unique_ptr<BroadPhase> make() {
+std::unique_ptr<BroadPhase> make_plain(const ParameterSet&) {
   return std::make_unique<T>();
 }
 
+constexpr double kMaxCount = 4294967295.0;  // fits every unsigned option
+
+constexpr ParameterSpec kGridParameters[] = {
+    {"cell", GridOptions::kCellSize, "smallest cell size; 0 = the largest box extent (a smaller value is raised to it)",
+     ParameterKind::Real, {0.0, 1e12}, "scene length"},
+    {"threads", double(GridOptions::kThreads), "threads for one find_pairs call (same pairs, same order)",
+     ParameterKind::Integer, {1.0, 256.0}, "threads"},
+};
+std::unique_ptr<BroadPhase> make_grid(const ParameterSet& p) {
+  GridOptions o;
+  o.cell_size = p.number("cell");
+  o.threads = static_cast<unsigned>(p.integer("threads"));
+  return std::make_unique<UniformGrid>(o);
+}
+
+constexpr ParameterSpec kSapParameters[] = {
+    {"swaps_per_endpoint", double(SapOptions::kSwapsPerEndpoint),
+     "swap budget per frame before a rebuild, in units of 6n bit_width(2n) (+ 64)", ParameterKind::Integer,
+     {1.0, kMaxCount}, "swaps per endpoint"},
+};
+std::unique_ptr<BroadPhase> make_sap(const ParameterSet& p) {
+  SapOptions o;
+  o.swaps_per_endpoint = p.integer("swaps_per_endpoint");
+  return std::make_unique<SweepAndPrune>(o);
+}
+
+constexpr ParameterSpec kSweepParameters[] = {
+    {"swaps_per_body", double(SortSweepOptions::kSwapsPerBody),
+     "swap budget per frame before a rebuild, in units of n (+ 64)", ParameterKind::Integer, {1.0, kMaxCount},
+     "swaps per body"},
+};
+std::unique_ptr<BroadPhase> make_sweep(const ParameterSet& p) {
+  SortSweepOptions o;
+  o.swaps_per_body = p.integer("swaps_per_body");
+  return std::make_unique<SortAndSweep>(o);
+}
+
 constexpr BroadPhaseInfo kBroadPhases[] = {
-    {"brute", "all pairs, O(n^2): the reference", &make<BruteForce>},
+    {"brute", "all pairs, O(n^2): the reference", {}, &make_plain<BruteForce>},
     {"sap", "sweep and prune (I-COLLIDE): endpoint lists on 3 axes kept between frames, pair set updated from swaps",
-     &make<SweepAndPrune>},
-    {"sweep", "sort and sweep: coherent insertion sort of starts, re-swept every frame", &make<SortAndSweep>},
-    {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil", &make<UniformGrid>},
-    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", &make<HierarchicalGrid>},
-    {"rtree", "Boost.Geometry R-tree (quadratic, 16), bulk-loaded per frame: library baseline",
-     &make<BoostRtree>},
+     kSapParameters, &make_sap},
+    {"sweep", "sort and sweep: coherent insertion sort of starts, re-swept every frame", kSweepParameters,
+     &make_sweep},
+    {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil", kGridParameters, &make_grid},
+    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", {},
+     &make_plain<HierarchicalGrid>},
+    {"rtree", "Boost.Geometry R-tree (quadratic, 16), bulk-loaded per frame: library baseline", {},
+     &make_plain<BoostRtree>},
 };
 
+std::string valid_names() {
+  std::string names;
+  for (const BroadPhaseInfo& info : kBroadPhases) names += (names.empty() ? "" : ", ") + std::string(info.name);
+  return names;
+}
+
+std::string valid_options(const BroadPhaseInfo& info) {
+  if (info.parameters.empty()) return "it takes none";
+  std::string s = "valid: ";
+  for (const ParameterSpec& p : info.parameters) s += (s.size() > 7 ? ", " : "") + describe_parameter(p);
+  return s;
+}
+
 }  // namespace
+
+std::unique_ptr<BroadPhase> BroadPhaseInfo::make() const { return factory(resolve_parameters(parameters, {})); }
 
 std::span<const BroadPhaseInfo> broad_phase_registry() { return kBroadPhases; }
 
 const BroadPhaseInfo& find_broad_phase(std::string_view name) {
   for (const BroadPhaseInfo& info : kBroadPhases)
     if (info.name == name) return info;
-  std::string names;
-  for (const BroadPhaseInfo& info : kBroadPhases) names += (names.empty() ? "" : ", ") + std::string(info.name);
-  throw std::invalid_argument("unknown broad phase '" + std::string(name) + "' (valid: " + names + ")");
+  throw std::invalid_argument("unknown broad phase '" + std::string(name) + "' (valid: " + valid_names() + ")");
+}
+
+BroadPhaseSpec parse_broad_phase(std::string_view spec) {
+  const std::size_t colon = spec.find(':');
+  const BroadPhaseInfo& info = find_broad_phase(spec.substr(0, colon));
+  if (colon == std::string_view::npos) return {&info, resolve_parameters(info.parameters, {})};
+  try {
+    return {&info, resolve_parameters(info.parameters, option_values_from_text(spec.substr(colon + 1), ""))};
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("broad phase '" + std::string(spec) + "': " + e.what() + " (" +
+                                valid_options(info) + ")");
+  }
 }
 
 }  // namespace ccd

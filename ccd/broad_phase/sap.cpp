@@ -67,7 +67,7 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
   Endpoint* e = endpoints_[axis].data();
   const double* bd = bounds_[axis].data();
   const std::size_t m = endpoints_[axis].size();
-  std::uint64_t swaps = stats_.swaps, tests = 0;
+  std::uint64_t swaps = swaps_, tests = 0;
   // This frame's values in the kept order: a separate gather pass (independent loads)
   // is faster than loading each value inside the insertion sort.
   for (std::size_t k = 0; k < m; ++k) e[k].value = bd[e[k].id];
@@ -134,12 +134,12 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
     e[j] = {v, id};
     swaps += k - j;
     if (swaps > budget) {
-      stats_.swaps = swaps;
+      swaps_ = swaps;
       stats_.box_tests += tests;
       return false;
     }
   }
-  stats_.swaps = swaps;
+  swaps_ = swaps;
   stats_.box_tests += tests;
   return true;
 }
@@ -147,6 +147,7 @@ bool SweepAndPrune::update_axis(int axis, std::span<const Aabb> boxes, std::uint
 void SweepAndPrune::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
   out.clear();
   stats_ = {};
+  swaps_ = 0;
   const std::size_t n = boxes.size();
   if (!built_ || n != endpoints_[0].size() / 2) {
     rebuild(boxes);
@@ -167,6 +168,7 @@ void SweepAndPrune::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair
   }
   const std::span<const BodyPair> p = pairs_.pairs();
   out.assign(p.begin(), p.end());
+  counters_[0].value = swaps_;
 }
 
 }  // namespace ccd

@@ -10,7 +10,7 @@
 // the set of overlapping pairs (ccd/broad_phase/pair_set.hpp).
 //
 // Each frame, per axis: re-read the endpoint values in the kept order and restore the
-// order by insertion sort with the same key, counting swaps (stats().swaps, all three
+// order by insertion sort with the same key, counting swaps (counters() "swaps", all three
 // axes; O(n + swaps)). Insertion sort swaps exactly the endpoint pairs whose order
 // changed since the last frame, once each; among them:
 //  - a start moving left past another body's end: the pair starts to overlap on this
@@ -53,6 +53,10 @@ class SweepAndPrune final : public BroadPhase {
   explicit SweepAndPrune(SapOptions options = {}) : options_(options) {}
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) override;
   BroadPhaseStats stats() const override { return stats_; }
+  /// {"swaps": insertion-sort swaps of the last call}.
+  std::span<const Counter> counters() const override { return counters_; }
+  /// Insertion-sort swaps of the last call (the "swaps" counter).
+  std::uint64_t swaps() const { return counters_[0].value; }
   /// The sweep axis of the last rebuild (largest centre variance): 0, 1, 2.
   int axis() const { return axis_; }
 
@@ -75,6 +79,8 @@ class SweepAndPrune final : public BroadPhase {
   std::vector<std::uint32_t> degree_;               // per body: its pairs in the set
   PairSet pairs_;
   BroadPhaseStats stats_;
+  std::uint64_t swaps_ = 0;  // this call's swaps so far
+  std::array<Counter, 1> counters_{{{"swaps", 0}}};
 };
 
 }  // namespace ccd

@@ -41,17 +41,18 @@ bool SortAndSweep::insertion_sort(std::uint64_t budget) {
     o[j] = id;
     swaps += k - j;
     if (swaps > budget) {
-      stats_.swaps = swaps;
+      swaps_ = swaps;
       return false;
     }
   }
-  stats_.swaps = swaps;
+  swaps_ = swaps;
   return true;
 }
 
 void SortAndSweep::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
   out.clear();
   stats_ = {};
+  swaps_ = 0;
   const std::size_t n = boxes.size();
   if (n != order_.size() || n == 0) {
     rebuild(boxes);
@@ -60,9 +61,9 @@ void SortAndSweep::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>
     const int ax = axis_;
     for (std::size_t k = 0; k < n; ++k) start_[k] = boxes[order_[k]].lo[ax];
     if (!insertion_sort(options_.swaps_per_body * n + 64)) {
-      const std::uint64_t swaps = stats_.swaps;
+      const std::uint64_t swaps = swaps_;
       rebuild(boxes);
-      stats_.swaps = swaps;
+      swaps_ = swaps;
       stats_.rebuilt = true;
     }
   }
@@ -118,6 +119,7 @@ void SortAndSweep::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>
       if ((l1i <= h1[j]) & (l1[j] <= h1i) & (l2i <= h2[j]) & (l2[j] <= h2i)) emit(j);
   }
   stats_.box_tests = tests;
+  counters_[0].value = swaps_;
 }
 
 }  // namespace ccd

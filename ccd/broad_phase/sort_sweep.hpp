@@ -7,7 +7,7 @@
 // State kept between frames: the body order sorted by box start (lo) on the sweep axis.
 // Each frame:
 //  1. re-read the starts in the kept order and restore sorted order by insertion sort,
-//     counting swaps (stats().swaps; O(n + swaps) for coherent motion);
+//     counting swaps (counters() "swaps"; O(n + swaps) for coherent motion);
 //  2. sweep the sorted order: body i against the following bodies j while
 //     lo_j <= hi_i on the sweep axis, then the two other axes. Every x-overlapping pair
 //     {i, j} is met exactly once, from the one of the two that comes first.
@@ -23,6 +23,8 @@
 // enough far from the origin). Boxes must be finite with lo <= hi.
 #include <ccd/broad_phase/broad_phase.hpp>
 
+#include <array>
+
 namespace ccd {
 
 struct SortSweepOptions {
@@ -37,6 +39,10 @@ class SortAndSweep final : public BroadPhase {
   explicit SortAndSweep(SortSweepOptions options = {}) : options_(options) {}
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) override;
   BroadPhaseStats stats() const override { return stats_; }
+  /// {"swaps": insertion-sort swaps of the last call}.
+  std::span<const Counter> counters() const override { return counters_; }
+  /// Insertion-sort swaps of the last call (the "swaps" counter).
+  std::uint64_t swaps() const { return counters_[0].value; }
   /// The current sweep axis (0, 1, 2).
   int axis() const { return axis_; }
 
@@ -51,6 +57,8 @@ class SortAndSweep final : public BroadPhase {
   std::vector<double> end_;           // hi on the sweep axis, in order
   std::vector<double> lo1_, hi1_, lo2_, hi2_;  // the two other axes, in order
   BroadPhaseStats stats_;
+  std::uint64_t swaps_ = 0;  // this call's swaps so far
+  std::array<Counter, 1> counters_{{{"swaps", 0}}};
 };
 
 }  // namespace ccd

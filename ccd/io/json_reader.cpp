@@ -171,14 +171,33 @@ std::uint64_t JsonReader::count(const json& v, const std::string& field, std::ui
   return v.get<std::uint64_t>();
 }
 
-const std::string& JsonReader::string(const json& v, const std::string& field) const {
+long long JsonReader::integer(const json& v, const std::string& field, long long lo, long long hi) const {
+  const std::string rule = "must be an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (!v.is_number_integer()) fail(field, rule);
+  if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) fail(field, rule);
+  const long long x = v.get<long long>();
+  if (x < lo || x > hi) fail(field, rule);
+  return x;
+}
+
+std::string JsonReader::string(const json& v, const std::string& field) const {
   if (!v.is_string()) fail(field, "must be a string");
-  return v.get_ref<const std::string&>();
+  return v.get<std::string>();
 }
 
 bool JsonReader::boolean(const json& v, const std::string& field) const {
   if (!v.is_boolean()) fail(field, "must be true or false");
   return v.get<bool>();
+}
+
+double JsonReader::optional_number(const json& obj, const char* key, const std::string& path, double fallback) const {
+  auto it = obj.find(key);
+  return it == obj.end() ? fallback : number(*it, path.empty() ? key : path + "." + key);
+}
+
+bool JsonReader::optional_bool(const json& obj, const char* key, const std::string& path, bool fallback) const {
+  auto it = obj.find(key);
+  return it == obj.end() ? fallback : boolean(*it, path.empty() ? key : path + "." + key);
 }
 
 }  // namespace ccd

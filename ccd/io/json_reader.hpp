@@ -49,10 +49,16 @@ struct JsonReader {
   std::uint32_t index(const nlohmann::json& v, const std::string& field) const;
   /// A non-negative integer of at most `max` (exactly representable: max <= 2^53).
   std::uint64_t count(const nlohmann::json& v, const std::string& field, std::uint64_t max) const;
+  /// An integer in [lo, hi] ("must be an integer in [lo, hi]").
+  long long integer(const nlohmann::json& v, const std::string& field, long long lo, long long hi) const;
   /// A string.
-  const std::string& string(const nlohmann::json& v, const std::string& field) const;
+  std::string string(const nlohmann::json& v, const std::string& field) const;
   /// A boolean.
   bool boolean(const nlohmann::json& v, const std::string& field) const;
+  /// obj[key] as a finite number, or `fallback` when absent.
+  double optional_number(const nlohmann::json& obj, const char* key, const std::string& path, double fallback) const;
+  /// obj[key] as a boolean, or `fallback` when absent.
+  bool optional_bool(const nlohmann::json& obj, const char* key, const std::string& path, bool fallback) const;
 };
 
 }  // namespace ccd

@@ -21,10 +21,12 @@
 // inputs whose differences are representable (e.g. dyadic coordinates) and otherwise
 // within those roundings. Not conservative beyond that.
 #include <ccd/geometry/aabb.hpp>
+#include <ccd/queries/query_status.hpp>
 
 namespace ccd {
 
-enum class AabbSweepStatus { Hit, Overlapping, Miss, Degenerate };
+/// Hit, Overlapping, Miss or Degenerate (ccd/queries/query_status.hpp).
+using AabbSweepStatus = QueryStatus;
 
 struct AabbSweepResult {
   AabbSweepStatus status = AabbSweepStatus::Miss;

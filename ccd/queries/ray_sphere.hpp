@@ -34,13 +34,15 @@
 // or NaN radius, negative or NaN t_max, non-finite inputs or squares that overflow
 // (|coordinate| above ~1e154). t_max = +inf is allowed (an unbounded ray).
 #include <ccd/geometry/vec3.hpp>
+#include <ccd/queries/query_status.hpp>
 
 namespace ccd {
 
 /// tol = factor * eps * max_i |origin_i - centre_i|, see the header comment.
 inline constexpr double ray_sphere_tolerance_factor = 16.0;
 
-enum class RaySphereStatus { Hit, Overlapping, Miss, Degenerate };
+/// Hit, Overlapping, Miss or Degenerate (ccd/queries/query_status.hpp).
+using RaySphereStatus = QueryStatus;
 
 struct RaySphereResult {
   RaySphereStatus status = RaySphereStatus::Miss;

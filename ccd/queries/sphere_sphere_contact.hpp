@@ -14,9 +14,10 @@
 // only when |f| at the minimum is inside the error bound (about 1e-32 relative) is a
 // minimum taken as touching. A miss by one ulp of the data is a miss.
 // Degenerate cases: no relative motion: the whole piece or nothing; coincident centres:
-// Overlapping; duration < 0 or non-finite input: NoContact. No allocation.
+// Overlapping; duration < 0 or non-finite input: Miss. No allocation.
 #include <ccd/geometry/vec3.hpp>
 #include <ccd/queries/polynomial_roots.hpp>
+#include <ccd/queries/query_status.hpp>
 
 #include <limits>
 
@@ -30,14 +31,13 @@ struct MovingSphere {
   double radius = 0.0;
 };
 
-enum class ContactStatus {
-  Hit,          ///< first contact at toi in (0, duration] (touching included)
-  Overlapping,  ///< in contact at s = 0 (toi = 0)
-  NoContact,    ///< separated for all of [0, duration] (toi = +infinity)
-};
+/// Hit (first contact at toi in (0, duration], touching included), Overlapping (in
+/// contact at s = 0, toi = 0) or Miss (separated for all of [0, duration], toi = +inf);
+/// the shared vocabulary of ccd/queries/query_status.hpp.
+using ContactStatus = QueryStatus;
 
 struct SphereSphereContact {
-  ContactStatus status = ContactStatus::NoContact;
+  ContactStatus status = ContactStatus::Miss;
   double toi = std::numeric_limits<double>::infinity();
 };
 

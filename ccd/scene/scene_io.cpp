@@ -3,7 +3,6 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
-#include <ccd/io/sha256.hpp>
 #include <ccd/scene/input_error.hpp>
 
 #include <cmath>
@@ -161,8 +160,6 @@ json scene_to_json(const Scene& s) {
   j["bodies"] = std::move(bodies);
   return j;
 }
-
-std::string scene_digest(const Scene& s) { return "sha256:" + sha256_hex(scene_to_json(s).dump()); }
 
 void save_scene(const Scene& s, const std::string& path) {
   write_file_atomically(path, scene_to_json(s).dump(1) + "\n");

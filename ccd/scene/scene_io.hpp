@@ -29,9 +29,6 @@ Scene load_scene(const std::string& path);
 void validate_scene(const Scene& scene, const std::string& file);
 
 nlohmann::json scene_to_json(const Scene& scene);
-/// "sha256:" and the SHA-256 of the compact text of scene_to_json: equal for equal scenes
-/// (every number printed to round-trip), different when any number differs.
-std::string scene_digest(const Scene& scene);
 /// Writes the scene atomically (see ccd/io/atomic_file.hpp).
 void save_scene(const Scene& scene, const std::string& path);
 

@@ -1,5 +1,7 @@
 #include <ccd/truth/ground_truth.hpp>
 
+#include <ccd/util/parallel_for.hpp>
+
 #include <ccd/truth/pair_contact.hpp>
 
 #include <algorithm>
@@ -177,23 +179,6 @@ std::size_t automatic_windows(const Trajectories& traj) {
   return static_cast<std::size_t>(std::min<double>(w, TruthOptions::max_auto_windows));
 }
 
-// Runs fn(k) for k in [0, count) on `threads` threads (static striding: deterministic
-// assignment; the results do not depend on it anyway).
-template <class Fn>
-void parallel_for(std::size_t count, unsigned threads, Fn&& fn) {
-  if (threads <= 1 || count <= 1) {
-    for (std::size_t k = 0; k < count; ++k) fn(k, 0u);
-    return;
-  }
-  std::vector<std::thread> pool;
-  const unsigned t_count = static_cast<unsigned>(std::min<std::size_t>(threads, count));
-  for (unsigned t = 0; t < t_count; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t k = t; k < count; k += t_count) fn(k, t);
-    });
-  for (std::thread& th : pool) th.join();
-}
-
 struct Run {
   std::uint32_t a, b;
   std::uint32_t w_first, w_last;
@@ -209,7 +194,7 @@ TruthResult compute_truth_detailed(const Trajectories& traj, const TruthOptions&
   TruthResult result;
   const std::size_t n = traj.size();
   const double horizon = traj.horizon();
-  unsigned threads = options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = resolve_threads(options.threads);
   const std::size_t windows = options.windows != 0 ? options.windows : automatic_windows(traj);
   result.stats.windows = windows;
   result.stats.threads = threads;

@@ -13,41 +13,68 @@ namespace {
 
 using nlohmann::json;
 
-json event_json(const ContactEvent& e) { return {{"a", e.a}, {"b", e.b}, {"enter", e.enter}, {"exit", e.exit}}; }
+json event_json(const TruthFile& t, std::size_t i) {
+  const ContactEvent& e = t.events[i];
+  json j = {{"a", e.a}, {"b", e.b}, {"enter", e.enter}, {"exit", e.exit}};
+  if (!t.errors.empty()) {
+    const EventError& err = t.errors[i];
+    if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
+    if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
+    if (err.grazing) j["grazing"] = true;
+  }
+  return j;
+}
 
-using Reader = JsonReader;
+bool is_digest(const std::string& s) {
+  if (s.size() != 64) return false;
+  for (char c : s)
+    if (!((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'))) return false;
+  return true;
+}
 
 }  // namespace
 
 json truth_to_json(const TruthFile& t) {
   json events = json::array();
-  for (const ContactEvent& e : t.events) events.push_back(event_json(e));
-  return {{"format", kTruthFormat}, {"horizon", t.horizon}, {"events", std::move(events)}};
+  for (std::size_t i = 0; i < t.events.size(); ++i) events.push_back(event_json(t, i));
+  return {{"format", kTruthFormat}, {"horizon", t.horizon}, {"scene_sha256", t.scene_sha256},
+          {"events", std::move(events)}};
 }
 
 std::string truth_to_text(const TruthFile& t) {
   std::string s = "{\"format\": \"" + std::string(kTruthFormat) + "\", \"horizon\": " + json(t.horizon).dump() +
-                  ",\n \"events\": [";
+                  ", \"scene_sha256\": " + json(t.scene_sha256).dump() + ",\n \"events\": [";
   for (std::size_t i = 0; i < t.events.size(); ++i) {
     s += i == 0 ? "\n  " : ",\n  ";
-    s += event_json(t.events[i]).dump();
+    s += event_json(t, i).dump();
   }
   s += t.events.empty() ? "]}\n" : "\n ]}\n";
   return s;
 }
 
 TruthFile truth_from_json(const json& j, const std::string& file) {
-  Reader r{file};
+  const JsonReader r{file};
   if (!j.is_object()) r.fail("", "a truth file must be a JSON object");
-  const json& format = r.require(j, "format", "");
-  if (!format.is_string() || format.get<std::string>() != kTruthFormat)
-    r.fail("format", std::string("must be \"") + kTruthFormat + "\"");
+  const std::string format = r.string(r.require(j, "format", ""), "format");
   TruthFile t;
+  if (format == kTruthFormat) {
+    t.version = 2;
+  } else if (format == kTruthFormatV1) {
+    t.version = 1;
+  } else {
+    r.fail("format", std::string("must be \"") + kTruthFormat + "\" or \"" + kTruthFormatV1 + "\"");
+  }
   t.horizon = r.number(r.require(j, "horizon", ""), "horizon");
   if (t.horizon <= 0.0) r.fail("horizon", "must be > 0");
+  if (t.version == 2) {
+    t.scene_sha256 = r.string(r.require(j, "scene_sha256", ""), "scene_sha256");
+    if (!is_digest(t.scene_sha256)) r.fail("scene_sha256", "must be 64 lowercase hexadecimal digits");
+  }
   const json& events = r.require(j, "events", "");
   if (!events.is_array()) r.fail("events", "must be an array");
   t.events.reserve(events.size());
+  std::vector<EventError> errors;
+  bool any_error = false;
   for (std::size_t i = 0; i < events.size(); ++i) {
     const std::string p = "events[" + std::to_string(i) + "]";
     const json& e = events[i];
@@ -63,7 +90,18 @@ TruthFile truth_from_json(const json& j, const std::string& file) {
     if (!t.events.empty() && !event_order(t.events.back(), ev))
       r.fail(p, "events must be sorted by (enter, a, b) without duplicates");
     t.events.push_back(ev);
+    EventError err;
+    if (t.version == 2) {
+      err.enter_error = r.optional_number(e, "enter_error", p, 0.0);
+      err.exit_error = r.optional_number(e, "exit_error", p, 0.0);
+      if (err.enter_error < 0.0) r.fail(p + ".enter_error", "must be >= 0");
+      if (err.exit_error < 0.0) r.fail(p + ".exit_error", "must be >= 0");
+      err.grazing = r.optional_bool(e, "grazing", p, false);
+    }
+    any_error = any_error || err != EventError{};
+    errors.push_back(err);
   }
+  if (any_error) t.errors = std::move(errors);
   return t;
 }
 

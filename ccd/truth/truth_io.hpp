@@ -1,15 +1,23 @@
 #pragma once
-// Reading and writing `ccdlab-truth/1` files: the exact contact intervals of a scene
-// (docs/truth.md describes every field).
+// Reading and writing truth files: the exact contact intervals of a scene (docs/truth.md
+// describes every field). Written as `ccdlab-truth/2`; `ccdlab-truth/1` files (no scene
+// digest, no error fields) are read too.
 //
-//   {"format": "ccdlab-truth/1", "horizon": T,
+//   {"format": "ccdlab-truth/2", "horizon": T, "scene_sha256": "<64 hex digits>",
 //    "events": [{"a": i, "b": j, "enter": t0, "exit": t1}, ...]}
+//
+// Per event, version 2 may add `enter_error` and `exit_error` (seconds >= 0: certified
+// bounds on the error of enter and exit; absent = 0, exact) and `grazing` (true: the pair's
+// distance stays within the solver's tolerance band, so the event may or may not exist;
+// absent = false). They live in TruthFile::errors, a side table that stays empty when
+// every event is exact, so ContactEvent keeps its size.
 //
 // Times are written with 17 significant digits, so a file round-trips bit for bit.
 // Validation on reading: malformed JSON, a missing or mistyped field, a non-finite
-// number, horizon <= 0, a or b not a non-negative integer, a >= b, enter > exit, times
-// outside [0, horizon], events out of (enter, a, b) order: each throws InputError naming
-// the file and the field (`events[3].exit`). Unknown fields are ignored.
+// number, horizon <= 0, a digest that is not 64 lowercase hex digits, a or b not a
+// non-negative integer, a >= b, enter > exit, times outside [0, horizon], a negative
+// error, events out of (enter, a, b) order: each throws InputError naming the file and
+// the field (`events[3].exit`). Unknown fields are ignored.
 #include <ccd/truth/ground_truth.hpp>
 
 #include <nlohmann/json.hpp>
@@ -18,12 +26,27 @@
 
 namespace ccd {
 
+/// Accuracy of one event's times; all zero for an exact solver.
+struct EventError {
+  double enter_error = 0.0;  ///< seconds
+  double exit_error = 0.0;   ///< seconds
+  bool grazing = false;
+  bool operator==(const EventError&) const = default;
+};
+
 struct TruthFile {
   double horizon = 0.0;
   std::vector<ContactEvent> events;  ///< sorted by (enter, a, b)
+  /// SHA-256 of the canonical scene (ccd/scene/scene_digest.hpp); empty when unknown
+  /// (a version 1 file).
+  std::string scene_sha256;
+  /// One entry per event, or empty when every event is exact.
+  std::vector<EventError> errors;
+  int version = 2;  ///< the format version read (written files are version 2)
 };
 
-inline constexpr const char* kTruthFormat = "ccdlab-truth/1";
+inline constexpr const char* kTruthFormat = "ccdlab-truth/2";
+inline constexpr const char* kTruthFormatV1 = "ccdlab-truth/1";
 
 nlohmann::json truth_to_json(const TruthFile& truth);
 /// Text of the file: one event per line, for diff-friendly output.
@@ -32,7 +55,7 @@ std::string truth_to_text(const TruthFile& truth);
 TruthFile truth_from_json(const nlohmann::json& j, const std::string& file);
 /// Reads and validates a truth file. Throws InputError.
 TruthFile load_truth(const std::string& path);
-/// Writes atomically (ccd/io/atomic_file.hpp).
+/// Writes atomically (ccd/io/atomic_file.hpp) as version 2.
 void save_truth(const TruthFile& truth, const std::string& path);
 
 }  // namespace ccd

@@ -9,13 +9,10 @@
 namespace ccdlab {
 namespace {
 
-const char* knowledge(ccd::Knowledge k) {
-  switch (k) {
-    case ccd::Knowledge::Instant: return "instant";
-    case ccd::Knowledge::Exact: return "exact";
-    case ccd::Knowledge::Bounded: return "bounded";
-  }
-  return "?";
+// One line per option: "option: name=default unit (doc; range)".
+void print_options(std::span<const ccd::ParameterSpec> parameters) {
+  for (const ccd::ParameterSpec& p : parameters)
+    std::cout << "  " << std::setw(18) << "" << "option: " << ccd::describe_parameter(p) << "\n";
 }
 
 int run_methods(std::span<const std::string> args) {
@@ -27,19 +24,24 @@ int run_methods(std::span<const std::string> args) {
     std::cerr << "ccdlab methods: unexpected argument '" << args[0] << "' (see ccdlab methods --help)\n";
     return kExitBadInput;
   }
-  std::cout << "A method is BOUND/BROADPHASE, e.g. aabb/sap, capsule/grid, horn:4/sap.\n\nBounds:\n";
+  std::cout << "A method is BOUND/BROADPHASE, e.g. aabb/sap, capsule/grid, horn:4/sap; either half may set\n"
+               "its options as NAME:option=value,... (capsule/grid:cell=2, horn:pieces=8/sap).\n\nBounds:\n";
   std::cout << "  " << std::left << std::setw(18) << "name" << std::setw(9) << "knows" << std::setw(14)
             << "conservative" << "description\n";
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::string name(b.name);
-    if (b.parameterised) name += ":M";
-    std::cout << "  " << std::setw(18) << name << std::setw(9) << knowledge(b.knowledge) << std::setw(14)
+    if (!b.parameters.empty()) name += ":M";
+    std::cout << "  " << std::setw(18) << name << std::setw(9) << ccd::to_string(b.knowledge) << std::setw(14)
               << (b.knowledge == ccd::Knowledge::Instant ? "at samples" : b.conservative ? "yes" : "no")
               << b.description << "\n";
+    print_options(b.parameters);
   }
   std::cout << "\nBroad phases:\n";
   for (const ccd::BroadPhaseInfo& p : ccd::broad_phase_registry())
+  {
     std::cout << "  " << std::setw(18) << p.name << p.description << "\n";
+    print_options(p.parameters);
+  }
   std::cout << "\n" << all_method_names().size() << " methods with default parameters (ccdlab methods --names).\n";
   return 0;
 }
@@ -51,7 +53,8 @@ extern const Command kMethodsCommand = {
     "usage: ccdlab methods [--names]\n"
     "\n"
     "Lists every bound (with what it may know and whether it is conservative) and every\n"
-    "broad phase. --names prints every composed method name, one per line.\n",
+    "broad phase, each with its options (default, unit, range). --names prints every\n"
+    "composed method name with default options, one per line.\n",
     run_methods};
 
 }  // namespace ccdlab

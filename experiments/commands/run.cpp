@@ -1,4 +1,4 @@
-// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--quiet]`
+// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]`
 #include "command.hpp"
 
 #include "../run_experiment.hpp"
@@ -6,6 +6,9 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
+#include <ccd/util/parallel_for.hpp>
 
 #include <atomic>
 #include <csignal>
@@ -27,16 +30,11 @@ extern "C" void on_signal(int) {
   }
 }
 
+// A flag's integer in [1, 4096] (ccd/util/integer_text.hpp).
 bool parse_int(const std::string& s, int& out) {
-  try {
-    std::size_t used = 0;
-    const long v = std::stol(s, &used);
-    if (used != s.size() || v < 1 || v > 4096) return false;
-    out = static_cast<int>(v);
-    return true;
-  } catch (...) {
-    return false;
-  }
+  const auto v = ccd::parse_integer(s, 1, 4096);
+  if (v) out = static_cast<int>(*v);
+  return v.has_value();
 }
 
 int run_run(std::span<const std::string> args) {
@@ -44,10 +42,10 @@ int run_run(std::span<const std::string> args) {
     std::cerr << "ccdlab run: " << msg << " (see ccdlab run --help)\n";
     return kExitBadInput;
   };
-  std::string experiment_path, out_path;
+  std::string experiment_path, out_path, truth_path;
   bool force = false;
   RunOptions options;
-  options.threads = std::max(1u, std::thread::hardware_concurrency());
+  options.threads = static_cast<int>(ccd::resolve_threads(0));
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](const char* flag) -> const std::string* {
@@ -68,6 +66,10 @@ int run_run(std::span<const std::string> args) {
       if (!v || slash == std::string::npos || !parse_int(v->substr(0, slash), options.shard.index) ||
           !parse_int(v->substr(slash + 1), options.shard.count) || options.shard.index > options.shard.count)
         return usage_error("--shard needs K/N with 1 <= K <= N");
+    } else if (a == "--truth") {
+      const std::string* v = value("--truth");
+      if (!v) return usage_error("--truth needs a truth file (ccdlab truth SCENE.json -o FILE)");
+      truth_path = *v;
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
     } else if (a == "--force") {
@@ -84,12 +86,23 @@ int run_run(std::span<const std::string> args) {
 
   // What is being done, for the one line that says what was too big if memory runs out.
   std::string doing = "reading " + experiment_path;
+  ccd::TruthFile stored_truth;  // --truth FILE: read before the run, used by it
   try {
     const Experiment e = load_experiment(experiment_path);
     if (!e.scene_path.empty()) doing = "reading the scene " + e.scene_path;
     else doing = "generating the scene " + e.scene_generator.dump();
     const ccd::Scene scene = load_experiment_scene(e, experiment_path);
     check_dt_against_horizon(e, scene.horizon, experiment_path);
+
+    if (!truth_path.empty()) {
+      doing = "reading " + truth_path;
+      stored_truth = ccd::load_truth(truth_path);
+      if (!check_stored_truth(stored_truth, scene, truth_path) && !options.quiet)
+        std::cerr << "ccdlab run: note: " << truth_path << " is " << ccd::kTruthFormatV1
+                  << " (no scene digest): only its horizon and body indices were checked\n";
+      options.truth = &stored_truth;
+      options.truth_file = truth_path;
+    }
 
     // The work, before any of it: refused past the limit unless forced.
     const double work = experiment_work(e, scene.bodies.size(), scene.horizon, options.shard.index,
@@ -114,7 +127,8 @@ int run_run(std::span<const std::string> args) {
                                           : std::string()) +
                  ".json";
     }
-    const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path};
+    const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path,
+                                  truth_path.empty() ? std::string("-") : truth_path};
     ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
     if (!options.quiet)
       std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
@@ -167,10 +181,11 @@ int run_run(std::span<const std::string> args) {
 
 extern const Command kRunCommand = {
     "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
-    "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--quiet] [--force]\n"
+    "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
+    "                  [--force]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
-    "ground truth and writes a ccdlab-results/1 file (docs/experiments.md).\n"
+    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md).\n"
     "\n"
     "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
     "                     checked before the run (a regular file, not an input, in a folder\n"
@@ -180,6 +195,10 @@ extern const Command kRunCommand = {
     "                     (default: all cores); counts do not depend on N\n"
     "  --shard K/N        run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
     "                     systems; join the shard files with `ccdlab merge`\n"
+    "  --truth FILE       reuse the ground truth in FILE (`ccdlab truth SCENE.json -o FILE`)\n"
+    "                     instead of computing it; FILE's scene digest must be this scene's\n"
+    "                     (else exit 2); a ccdlab-truth/1 file is checked only for its\n"
+    "                     horizon and body indices\n"
     "  -q, --quiet        no progress on stderr\n"
     "  --force            run even when the work estimate (bodies x steps, summed over the\n"
     "                     jobs) is above 1e11 body-steps\n"

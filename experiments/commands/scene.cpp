@@ -68,7 +68,7 @@ int run_scene(std::span<const std::string> args) {
     if (generator.empty()) throw std::invalid_argument("missing GENERATOR (see ccdlab scene --help)");
     const Generator& gen = generator_named(generator);
     if (!have_output) throw std::invalid_argument("missing -o SCENE.json");
-    GeneratorParameters params;
+    ccd::ParameterSet params;
     try {
       std::vector<ParameterValue> given;
       for (const std::string& a : assignments) given.push_back(parameter_value_from_text(a));

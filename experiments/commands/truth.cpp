@@ -1,13 +1,15 @@
 // `ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet]`:
-// exact contact intervals of every pair (ground truth, format ccdlab-truth/1).
+// exact contact intervals of every pair (ground truth, format ccdlab-truth/2).
 #include "command.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
+#include <ccd/util/integer_text.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -25,7 +27,7 @@ constexpr const char* kUsage =
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md).\n"
     "\n"
-    "  -o OUT.json   write the intervals as ccdlab-truth/1 (atomically; '-' = stdout); checked\n"
+    "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"
     "                before the work: a regular file, not the scene, in a folder that takes a file\n"
     "  --threads N   worker threads, at most 4096 (default: one per core); the result does not\n"
     "                depend on it\n"
@@ -44,11 +46,6 @@ int usage_error(const std::string& what) {
   return kExitBadInput;
 }
 
-std::optional<unsigned long> parse_count(const std::string& s) {
-  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 9) return std::nullopt;
-  return std::stoul(s);
-}
-
 int run_truth(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool quiet = false;
@@ -61,8 +58,8 @@ int run_truth(std::span<const std::string> args) {
       if (a == "-o" || a == "--output") {
         out_path = v;
       } else {
-        const auto n = parse_count(v);
-        if (!n || *n == 0) return usage_error(a + " needs a positive integer, got '" + v + "'");
+        const auto n = ccd::parse_integer(v, 1, 999999999);
+        if (!n) return usage_error(a + " needs a positive integer, got '" + v + "'");
         if (a == "--threads" && *n > 4096) return usage_error("--threads must be at most 4096, got " + v);
         if (a == "--windows" && *n > kMaxWindows)
           return usage_error("--windows must be at most " + std::to_string(kMaxWindows) + ", got " + v);
@@ -106,7 +103,13 @@ int run_truth(std::span<const std::string> args) {
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     doing = "writing " + out_path;
-    if (output) output->commit(ccd::truth_to_text({scene.horizon, result.events}));
+    if (output) {
+      ccd::TruthFile file;
+      file.horizon = scene.horizon;
+      file.events = result.events;
+      file.scene_sha256 = ccd::scene_digest(scene);
+      output->commit(ccd::truth_to_text(file));
+    }
     if (quiet || out_path == "-") return 0;
     std::size_t tangent = 0;
     for (const ccd::ContactEvent& e : result.events) tangent += e.enter == e.exit;

@@ -3,10 +3,10 @@
 // walls [0, box_max] (the offset is applied later by generate_scene), and `bodies`
 // default-initialised bodies for the generator to fill in.
 #include <ccd/scene/scene.hpp>
-#include <experiments/generators/parameters.hpp>
+#include <experiments/generators/generator_parameters.hpp>
 
 namespace ccdlab {
 
-ccd::Scene box_scene(const GeneratorParameters& params, const ccd::Vec3& box_max);
+ccd::Scene box_scene(const ParameterSet& params, const ccd::Vec3& box_max);
 
 }  // namespace ccdlab

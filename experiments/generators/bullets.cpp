@@ -29,7 +29,7 @@ constexpr ParameterSpec kParameters[] = {
     kOverlapParameter,
 };
 
-ccd::Scene generate_bullets(const GeneratorParameters& p) {
+ccd::Scene generate_bullets(const ParameterSet& p) {
   require_not_greater(p, "r_min", "r_max");
   const double r_min = p.number("r_min");
   const double r_max = p.number("r_max");

@@ -35,7 +35,7 @@ bool power_of_two(double x) {
   return std::frexp(x, &exponent) == 0.5;
 }
 
-ccd::Scene generate_grazing(const GeneratorParameters& p) {
+ccd::Scene generate_grazing(const ParameterSet& p) {
   const double r = p.number("radius");
   const double speed = p.number("speed");
   const double gap = p.number("gap");

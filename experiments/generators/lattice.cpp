@@ -23,7 +23,7 @@ constexpr ParameterSpec kParameters[] = {
      ParameterKind::Real, kNonNegativeRate},
 };
 
-ccd::Scene generate_lattice(const GeneratorParameters& p) {
+ccd::Scene generate_lattice(const ParameterSet& p) {
   const double r = p.number("radius");
   int exponent = 0;
   if (std::frexp(r, &exponent) != 0.5)

@@ -52,7 +52,7 @@ void apply_offset(ccd::Scene& scene, const ccd::Vec3& offset) {
 
 }  // namespace
 
-ccd::Scene generate_scene(const Generator& gen, const GeneratorParameters& params) {
+ccd::Scene generate_scene(const Generator& gen, const ParameterSet& params) {
   ccd::Scene scene = gen.generate(params);
   apply_offset(scene, params.vector("offset"));
   if (scene.bodies.size() != params.integer("bodies"))

@@ -18,7 +18,7 @@
 // callers prefix their context. A generator that breaks its own guarantee throws
 // std::logic_error.
 #include <ccd/scene/scene.hpp>
-#include <experiments/generators/parameters.hpp>
+#include <experiments/generators/generator_parameters.hpp>
 
 #include <nlohmann/json.hpp>
 #include <span>
@@ -32,7 +32,7 @@ struct Generator {
   std::span<const ParameterSpec> parameters;
   /// Builds the scene near the origin (offset not applied). May throw
   /// std::invalid_argument for a rule between parameters (r_min <= r_max).
-  ccd::Scene (*generate)(const GeneratorParameters& params);
+  ccd::Scene (*generate)(const ParameterSet& params);
 };
 
 /// The table, in the order of `ccdlab scene --help`.
@@ -41,7 +41,7 @@ std::span<const Generator> generators();
 const Generator& generator_named(std::string_view name);
 
 /// Runs `gen` on checked parameters, applies the offset, validates the scene.
-ccd::Scene generate_scene(const Generator& gen, const GeneratorParameters& params);
+ccd::Scene generate_scene(const Generator& gen, const ParameterSet& params);
 /// Checks `given` against the generator's table (resolve_parameters) and runs it.
 ccd::Scene generate_scene(std::string_view name, std::span<const ParameterValue> given);
 /// For experiment files: params is a JSON object such as {"bodies": 2000, "seed": 7}.

@@ -41,7 +41,7 @@ void random_times(Random& rng, double horizon, std::vector<double>& t) {
   }
 }
 
-ccd::Scene generate_swarm(const GeneratorParameters& p) {
+ccd::Scene generate_swarm(const ParameterSet& p) {
   require_not_greater(p, "r_min", "r_max");
   const double r_min = p.number("r_min");
   const double r_max = p.number("r_max");

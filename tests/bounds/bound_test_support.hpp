@@ -247,7 +247,7 @@ inline std::vector<std::string> bound_specs() {
   std::vector<std::string> out;
   for (const BoundInfo& b : bound_registry()) {
     out.emplace_back(b.name);
-    if (b.parameterised) {
+    if (!b.parameters.empty()) {  // the first option is M
       out.push_back(std::string(b.name) + ":1");
       out.push_back(std::string(b.name) + ":7");
     }

@@ -46,6 +46,6 @@ TEST_CASE("capsule of linear motion is the exact swept sphere", "[bounds][capsul
     std::vector<ccd::Aabb> boxes;
     bound.prepare(st.context(ccd::Knowledge::Exact), boxes);
     CHECK(bound.capsule(0).radius == Approx(0.5).epsilon(1e-12));
-    CHECK(bound.test(0, 1, nullptr) == (offset < 1.0));
+    CHECK(bound.test(0, 1).possible() == (offset < 1.0));
   }
 }

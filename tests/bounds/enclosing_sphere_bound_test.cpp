@@ -45,5 +45,5 @@ TEST_CASE("enclosing sphere radius balances the horn's ends", "[bounds][enclosin
   CHECK(bound.shape(0).centre.x() == Approx(1.25));
   CHECK(bound.shape(0).radius == Approx(2.25));
   CHECK(bound.shape(1).radius == Approx(1.5));
-  CHECK_FALSE(bound.test(0, 1, nullptr));  // 10 - 1.25 = 8.75 > 3.75
+  CHECK_FALSE(bound.test(0, 1).possible());  // 10 - 1.25 = 8.75 > 3.75
 }

@@ -57,9 +57,9 @@ TEST_CASE("horn and horn_sat agree for axis-aligned velocities", "[bounds][horn_
   int agree = 0, accepted = 0;
   for (std::uint32_t a = 0; a < s.size(); ++a) {
     for (std::uint32_t b = a + 1; b < s.size(); ++b) {
-      double e1 = -1, e2 = -1;
-      const bool h1 = horn.test(a, b, &e1);
-      const bool h2 = sat.test(a, b, &e2);
+      const ccd::PairTest r1 = horn.test(a, b), r2 = sat.test(a, b);
+      const bool h1 = r1.possible(), h2 = r2.possible();
+      const double e1 = r1.earliest, e2 = r2.earliest;
       if (h1) CHECK(h2);  // conservative at least where horn is
       if (h1 == h2) ++agree;
       if (h1 && h2) {

@@ -6,7 +6,7 @@
 #include <random>
 
 using ccd::OrientedTrapezoid;
-using ccd::TrapezoidOverlap;
+using ccd::PairTest;
 using ccd::Vec3;
 
 namespace {
@@ -88,7 +88,7 @@ TEST_CASE("oriented_trapezoid_overlap agrees with sampled box distances", "[boun
     const Eigen::Matrix3d rb = i % 3 == 0 ? Eigen::Matrix3d(ra * Eigen::AngleAxisd(1.0, Vec3::UnitZ()))
                                           : random_rotation(rng);
     const OrientedTrapezoid a = random_oriented(rng, ra), b = random_oriented(rng, rb);
-    const TrapezoidOverlap o = ccd::oriented_trapezoid_overlap(a, b);
+    const PairTest o = ccd::oriented_trapezoid_overlap(a, b);
     double first_sampled = std::numeric_limits<double>::infinity();
     for (int k = 0; k <= 1000; ++k) {
       const double t = k / 1000.0;
@@ -97,7 +97,7 @@ TEST_CASE("oriented_trapezoid_overlap agrees with sampled box distances", "[boun
         break;
       }
     }
-    if (o.status == TrapezoidOverlap::Status::Disjoint) {
+    if (o.status == PairTest::Status::Disjoint) {
       ++disjoint;
       CHECK(first_sampled == std::numeric_limits<double>::infinity());
     } else {
@@ -151,14 +151,14 @@ TEST_CASE("oriented and axis-aligned trapezoid tests agree for axis-aligned fram
     const auto ref = ccd::trapezoid_overlap(aa, bb);
     const auto inflated = ccd::trapezoid_overlap(aa_shrunk, bb_shrunk);
     const auto sat = ccd::oriented_trapezoid_overlap(oa, ob);
-    if (ref.status == TrapezoidOverlap::Status::Possible) {
-      REQUIRE(sat.status == TrapezoidOverlap::Status::Possible);
+    if (ref.status == PairTest::Status::Possible) {
+      REQUIRE(sat.status == PairTest::Status::Possible);
       CHECK(sat.earliest <= ref.earliest);
       CHECK(sat.earliest >= inflated.earliest);
       ++agree_possible;
     }
-    if (inflated.status == TrapezoidOverlap::Status::Disjoint) {
-      CHECK(sat.status == TrapezoidOverlap::Status::Disjoint);
+    if (inflated.status == PairTest::Status::Disjoint) {
+      CHECK(sat.status == PairTest::Status::Disjoint);
       ++agree_disjoint;
     }
   }

@@ -1,9 +1,12 @@
 // Registry-wide tests: parsing, containment of random motions in every bound's box, and
 // zero misses of every conservative bound on constructed contacts.
+#include <bounds/horn_bound.hpp>
 #include <bounds/registry.hpp>
 #include <tests/bounds/bound_test_support.hpp>
 
 #include <catch2/catch.hpp>
+
+#include <limits>
 #include <map>
 #include <set>
 #include <stdexcept>
@@ -34,8 +37,11 @@ TEST_CASE("the bound registry has unique names and consistent entries", "[bounds
     CHECK(names.insert(b.name).second);
     CHECK(!b.description.empty());
     CHECK(b.conservative);  // every bound here is conservative under its knowledge
-    if (b.parameterised) CHECK(b.default_parameter >= 1);
-    CHECK(b.make(b.parameterised ? b.default_parameter : 0) != nullptr);
+    for (const ccd::ParameterSpec& p : b.parameters) {
+      CHECK(!p.unit.empty());
+      CHECK(p.range.contains(p.default_value));
+    }
+    CHECK(b.make() != nullptr);
   }
   for (const char* n : {"sphere", "aabb", "swept_aabb", "capsule", "horn", "horn_sat", "enclosing_sphere"})
     CHECK(names.count(n) == 1);
@@ -49,13 +55,25 @@ TEST_CASE("parse_bound resolves names and parameters", "[bounds][registry]") {
   }
   SECTION("default parameter") {
     const ccd::BoundSpec s = ccd::parse_bound("horn");
-    CHECK(s.parameter == s.info->default_parameter);
+    CHECK(s.options.integer("pieces") == 4);
+    CHECK(s.options.to_json() == nlohmann::json{{"pieces", 4}});
   }
-  SECTION("explicit parameter") { CHECK(ccd::parse_bound("horn_sat:7").parameter == 7); }
+  SECTION("explicit parameter, bare or named") {
+    CHECK(ccd::parse_bound("horn_sat:7").options.integer("pieces") == 7);
+    CHECK(ccd::parse_bound("horn_sat:pieces=7").options.integer("pieces") == 7);
+    const auto horn = ccd::parse_bound("horn:3").make();
+    CHECK(dynamic_cast<const ccd::HornBound&>(*horn).pieces() == 3);
+  }
+  SECTION("a bound without options has an empty table") {
+    CHECK(ccd::parse_bound("capsule").options.to_json() == nlohmann::json::object());
+    CHECK_THROWS_WITH(ccd::parse_bound("capsule:4"), Catch::Contains("it takes none"));
+  }
   SECTION("errors") {
     CHECK_THROWS_AS(ccd::parse_bound("hron"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:0"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:-2"), std::invalid_argument);
+    CHECK_THROWS_WITH(ccd::parse_bound("horn:2000"), Catch::Contains("pieces") && Catch::Contains("[1, 1024]"));
+    CHECK_THROWS_WITH(ccd::parse_bound("horn:pices=2"), Catch::Contains("unknown parameter 'pices'"));
     CHECK_THROWS_AS(ccd::parse_bound("horn:4x"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("horn:"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_bound("capsule:3"), std::invalid_argument);
@@ -133,9 +151,10 @@ TEST_CASE("no conservative bound misses a constructed contact", "[bounds][zero_m
       bounds[b]->prepare(ctx, boxes);
       for (std::size_t i = 0; i < cb.tc.size(); ++i) {
         const auto a = static_cast<std::uint32_t>(2 * i);
-        double earliest = -1.0;
         const bool box_ok = boxes[a].overlaps(boxes[a + 1]);
-        const bool test_ok = bounds[b]->test(a, a + 1, &earliest);
+        const ccd::PairTest test = bounds[b]->test(a, a + 1);
+        const bool test_ok = test.possible();
+        const double earliest = test.earliest;
         const bool time_ok = earliest <= cb.tc[i];
         if (!(box_ok && test_ok && time_ok)) {
           if (++misses <= 5)
@@ -165,12 +184,12 @@ TEST_CASE("instant bounds report every pair touching at the sample time", "[boun
     const ccd::test::ContactBatch cb = ccd::test::contact_batch(rng, 20000, 0.0, 10.0);
     for (const ccd::BoundInfo& info : ccd::bound_registry()) {
       if (info.knowledge != ccd::Knowledge::Instant) continue;
-      auto bound = info.make(0);
+      auto bound = info.make();
       std::vector<ccd::Aabb> boxes;
       bound->prepare(cb.step.context(ccd::Knowledge::Instant), boxes);
       for (std::size_t i = 0; i < cb.tc.size(); ++i) {
         const auto a = static_cast<std::uint32_t>(2 * i);
-        if (!(boxes[a].overlaps(boxes[a + 1]) && bound->test(a, a + 1, nullptr))) {
+        if (!(boxes[a].overlaps(boxes[a + 1]) && bound->test(a, a + 1).possible())) {
           if (++misses <= 5) FAIL_CHECK(info.name << " misses a " << cb.kind[i] << " pair");
         }
       }
@@ -192,8 +211,10 @@ TEST_CASE("instant bounds reject separated pairs", "[bounds][registry]") {
   auto sphere = ccd::parse_bound("sphere").make();
   sphere->prepare(st.context(ccd::Knowledge::Instant), boxes);
   CHECK(boxes[0].overlaps(boxes[1]));
-  CHECK_FALSE(sphere->test(0, 1, nullptr));
+  CHECK(sphere->test(0, 1).status == ccd::PairTest::Status::Disjoint);
+  CHECK(sphere->test(0, 1).earliest == std::numeric_limits<double>::infinity());
   auto aabb = ccd::parse_bound("aabb").make();
   aabb->prepare(st.context(ccd::Knowledge::Instant), boxes);
-  CHECK(aabb->test(0, 1, nullptr));
+  CHECK(aabb->test(0, 1).status == ccd::PairTest::Status::Possible);
+  CHECK(aabb->test(0, 1).earliest == 0.0);  // the sample time: an instant bound carries no timing
 }

@@ -7,7 +7,7 @@
 #include <random>
 
 using ccd::Trapezoid;
-using ccd::TrapezoidOverlap;
+using ccd::PairTest;
 using ccd::Vec3;
 
 namespace {
@@ -41,7 +41,7 @@ TEST_CASE("trapezoid_overlap agrees with dense sampling in time", "[bounds][trap
     const double t0 = 0.25, t1 = 0.75;
     const Trapezoid a = random_trapezoid(rng, t0, t1);
     const Trapezoid b = random_trapezoid(rng, t0, t1);
-    const TrapezoidOverlap o = ccd::trapezoid_overlap(a, b);
+    const PairTest o = ccd::trapezoid_overlap(a, b);
     double first_sampled = std::numeric_limits<double>::infinity();
     for (int k = 0; k < samples; ++k) {
       const double t = t0 + (t1 - t0) * k / (samples - 1);
@@ -50,7 +50,7 @@ TEST_CASE("trapezoid_overlap agrees with dense sampling in time", "[bounds][trap
         break;
       }
     }
-    if (o.status == TrapezoidOverlap::Status::Disjoint) {
+    if (o.status == PairTest::Status::Disjoint) {
       ++disjoint;
       CHECK(first_sampled == std::numeric_limits<double>::infinity());  // never disjoint when sampled overlap
     } else {
@@ -74,16 +74,16 @@ TEST_CASE("trapezoid_overlap named cases", "[bounds][trapezoid]") {
     // b slides in x from 3 to 1 (its lo face): touches a's hi face x = 1 at t = 1.
     Trapezoid b{0.0, 1.0, Vec3(3, 0, 0), Vec3(4, 1, 1), Vec3(1, 0, 0), Vec3(2, 1, 1)};
     const auto o = ccd::trapezoid_overlap(a, b);
-    REQUIRE(o.status == TrapezoidOverlap::Status::Possible);
+    REQUIRE(o.status == PairTest::Status::Possible);
     CHECK(o.earliest == Approx(1.0));
   }
   SECTION("stationary and separated on one axis: disjoint") {
     Trapezoid b{0.0, 1.0, Vec3(0, 2, 0), Vec3(1, 3, 1), Vec3(0, 2, 0), Vec3(1, 3, 1)};
-    CHECK(ccd::trapezoid_overlap(a, b).status == TrapezoidOverlap::Status::Disjoint);
+    CHECK(ccd::trapezoid_overlap(a, b).status == PairTest::Status::Disjoint);
   }
   SECTION("coincident: possible at t0") {
     const auto o = ccd::trapezoid_overlap(a, a);
-    CHECK(o.status == TrapezoidOverlap::Status::Possible);
+    CHECK(o.status == PairTest::Status::Possible);
     CHECK(o.earliest == 0.0);
   }
   SECTION("passing through on different axes at different times: disjoint") {
@@ -93,7 +93,7 @@ TEST_CASE("trapezoid_overlap named cases", "[bounds][trapezoid]") {
     b.hi0.y() = 6;
     b.lo1.y() = 0.5;
     b.hi1.y() = 1.5;
-    CHECK(ccd::trapezoid_overlap(a, b).status == TrapezoidOverlap::Status::Disjoint);
+    CHECK(ccd::trapezoid_overlap(a, b).status == PairTest::Status::Disjoint);
   }
 }
 

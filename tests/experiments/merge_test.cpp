@@ -131,7 +131,7 @@ TEST_CASE("merge validates every field of every shard and names file and field",
   }
   SECTION("the shard itself") {
     first["shard"]["index"] = 4;
-    CHECK(merge_error(s.shards) == s1 + ": shard.index: must be an integer in [0, 3]");
+    CHECK(merge_error(s.shards) == s1 + ": shard.index: must be an integer in [1, 3]");
     first["shard"]["index"] = 1;
     first["shard"]["jobs"] = 7;
     CHECK(merge_error(s.shards) == s1 + ": shard.jobs: must be 6 (methods x dt of the experiment)");
@@ -148,15 +148,17 @@ TEST_CASE("merge refuses shards of different scene contents under the same file 
   // Shard 2 ran after one body of scene.json moved by 1e-9 m: the same path, the same
   // number of bodies and events, another scene.
   Shards s(1.5 + 1e-9);
-  CHECK(merge_error(s.shards) == s.shards[1].file + ": scene.digest: a different scene than " + s.shards[0].file +
-                                     " (\"" + s.shards[1].results["scene"]["digest"].get<std::string>() + "\" here, \"" +
-                                     s.shards[0].results["scene"]["digest"].get<std::string>() + "\" there)");
+  const std::string here = s.shards[1].results["truth"]["scene_sha256"].get<std::string>();
+  const std::string there = s.shards[0].results["truth"]["scene_sha256"].get<std::string>();
+  REQUIRE(here != there);
+  CHECK(merge_error(s.shards) == s.shards[1].file + ": truth.scene_sha256: a different scene than " + s.shards[0].file +
+                                     " (\"" + here + "\" here, \"" + there + "\" there)");
   // On the command line: exit 2, one line, no file.
   std::string err;
   const std::string out = s.dir / "merged.json";
   CHECK(run_ccdlab("merge " + s.shards[0].file + " " + s.shards[1].file + " " + s.shards[2].file + " -o " + out, &err,
                &s.dir) == 2);
-  CHECK(err.rfind("ccdlab merge: " + s.shards[1].file + ": scene.digest: a different scene", 0) == 0);
+  CHECK(err.rfind("ccdlab merge: " + s.shards[1].file + ": truth.scene_sha256: a different scene", 0) == 0);
   CHECK(std::count(err.begin(), err.end(), '\n') == 1);
   CHECK_FALSE(fs::exists(out));
   // Nor over one of its inputs.

@@ -1,35 +1,34 @@
 // The library example of README.md, compiled and run, so the README stays true.
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <fstream>
 #include <sstream>
+#include <string>
 
 #define main readme_example_main
 // ---- README example begins (keep in sync with README.md, "Library") ----
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
+#include <ccd/motion/state_cursor.hpp>
+#include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
-#include <ccd/truth/pair_contact.hpp>
 #include <iostream>
 
 int main() {
   const ccd::Scene scene = ccd::load_scene(CCDLAB_SOURCE_DIR "/data/scenes/default.json");
-  const ccd::Trajectories motion(scene);                 // exact: wall reflections solved
-  const auto events = ccd::compute_truth(motion);        // every contact interval
-  auto bound = ccd::parse_bound("capsule").make();       // a conservative space-time bound
-  auto broad = ccd::find_broad_phase("grid").make();     // culls with the bound's boxes
-  const double t0 = 0.0, t1 = 1.0 / 60.0;                // one step
+  const ccd::Trajectories motion(scene);                  // exact: wall reflections solved
+  const auto events = ccd::compute_truth(motion);         // every contact interval
+  const ccd::BoundSpec capsule = ccd::parse_bound("capsule");  // a conservative space-time bound
+  ccd::StepPipeline pipeline(capsule.make(), capsule.info->knowledge,
+                             ccd::find_broad_phase("grid").make());  // culls with the bound's boxes
+  const double t0 = 0.0, t1 = 1.0 / 60.0;                 // one step
   std::vector<ccd::BodyState> start;
-  for (std::size_t i = 0; i < motion.size(); ++i)
-    start.push_back({motion.position(i, t0), motion.velocity(i, t0), motion.radius(i)});
-  std::vector<ccd::Aabb> boxes;
-  std::vector<ccd::BodyPair> pairs;
-  bound->prepare({t0, t1, start, &motion, 0.0, scene.box}, boxes);  // one box per body
-  broad->find_pairs(boxes, pairs);
-  for (auto [a, b] : pairs)
-    if (bound->test(a, b, nullptr))
-      if (auto toi = ccd::pair_first_contact(motion, a, b, t0, t1))
-        std::cout << a << " and " << b << " touch at t = " << *toi << "\n";
+  ccd::StateCursor(motion).evaluate(t0, start);           // every body's state at t0
+  ccd::StepResult step;                                   // bound -> broad phase -> test -> narrow
+  pipeline.run({t0, t1, start, &motion, 0.0, scene.box}, motion, step);
+  for (const ccd::PairContact& c : step.contacts)
+    std::cout << c.pair.a << " and " << c.pair.b << " touch at t = " << c.contact.toi << "\n";
   std::cout << events.size() << " contact events in " << scene.horizon << " s\n";
   return 0;
 }
@@ -51,4 +50,32 @@ TEST_CASE("the README's library example runs and agrees with the ground truth", 
   const std::string out = example_out.str();
   CHECK(std::count(out.begin(), out.end(), '\n') >= static_cast<long>(first_step) + 1);
   CHECK(out.find(std::to_string(events.size()) + " contact events") != std::string::npos);
+}
+
+TEST_CASE("the README shows the example this file compiles", "[readme]") {
+  // The example between the markers above, as README.md must show it: the scene path
+  // relative to the repository and no explicit return.
+  auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    REQUIRE(in);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  };
+  const std::string self = slurp(CCDLAB_SOURCE_DIR "/tests/experiments/readme_example_test.cpp");
+  const std::string begin = "(keep in sync with README.md, \"Library\") ----\n";
+  const std::size_t a = self.find(begin);
+  const std::size_t b = self.find("// ---- README example ends ----");
+  REQUIRE(a != std::string::npos);
+  REQUIRE(b != std::string::npos);
+  std::string expected = self.substr(a + begin.size(), b - a - begin.size());
+  auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = expected.find(from);
+    REQUIRE(at != std::string::npos);
+    expected.replace(at, from.size(), to);
+  };
+  replace("CCDLAB_SOURCE_DIR \"/data/scenes/default.json\"", "\"data/scenes/default.json\"");
+  replace("  return 0;\n", "");
+  const std::string readme = slurp(CCDLAB_SOURCE_DIR "/README.md");
+  CHECK(readme.find("```cpp\n" + expected + "```\n") != std::string::npos);
 }

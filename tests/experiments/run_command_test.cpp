@@ -64,6 +64,12 @@ TEST_CASE("ccdlab run rejects bad experiments with exit 2 and writes nothing", "
     CHECK(err.find("methods[1]") != std::string::npos);
     CHECK(err.find("sap") != std::string::npos);  // the list of valid broad phases
   }
+  SECTION("bad method option: the field and the option are named") {
+    e["methods"] = {"aabb/sap", "aabb/grid:cell=-1"};
+    CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
+    CHECK(err.find("e.json: methods[1]") != std::string::npos);
+    CHECK(err.find("parameter 'cell'") != std::string::npos);
+  }
   SECTION("dt <= 0") {
     e["dt"] = {0.1, 0.0};
     CHECK(ccdlab("run " + dir.write("e.json", e) + " -o " + out, &err, &dir) == 2);
@@ -96,7 +102,7 @@ TEST_CASE("ccdlab run rejects bad experiments with exit 2 and writes nothing", "
   CHECK_FALSE(fs::exists(out));
 }
 
-TEST_CASE("counts do not depend on the thread count; shards merge into the whole run", "[run][cli]") {
+TEST_CASE("counts do not depend on the thread count, shards merge into the whole run", "[run][cli]") {
   const TempDir dir;
   const std::string e = dir.write("e.json", small_experiment());
   const std::string one = (dir.path / "one.json").string(), two = (dir.path / "two.json").string();
@@ -127,6 +133,16 @@ TEST_CASE("counts do not depend on the thread count; shards merge into the whole
     // A missing shard is an error.
     CHECK(ccdlab("merge " + (dir.path / "s1.json").string() + " -o " + (dir.path / "bad.json").string()) == 2);
     CHECK_FALSE(fs::exists(dir.path / "bad.json"));
+    // A malformed shard: the message names its file and the field.
+    json broken = read((dir.path / "s2.json").string());
+    broken["shard"]["count"] = "three";
+    const std::string broken_path = dir.write("broken.json", broken);
+    std::string err;
+    CHECK(ccdlab("merge " + (dir.path / "s1.json").string() + " " + broken_path + " " +
+                     (dir.path / "s3.json").string() + " -o " + (dir.path / "bad.json").string(),
+                 &err, &dir) == 2);
+    CHECK(err.find(broken_path + ": shard.count: must be an integer in [1, 4096]") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir.path / "bad.json"));
   }
 }
 
@@ -142,4 +158,58 @@ TEST_CASE("Ctrl-C leaves no results file and exits with 130", "[run][cli]") {
   CHECK(WEXITSTATUS(rc) == 130);
   CHECK_FALSE(fs::exists(out));
   for (const auto& f : fs::directory_iterator(dir.path)) CHECK(f.path().filename().string().find(".tmp.") == std::string::npos);
+}
+
+TEST_CASE("ccdlab run --truth reuses a stored truth of the same scene only", "[run][cli][truth]") {
+  const TempDir dir;
+  const std::string scene = (dir.path / "scene.json").string();
+  REQUIRE(ccdlab("scene gas bodies=150 seed=3 horizon=0.5 -o " + scene) == 0);
+  json e = small_experiment();
+  e["scene"] = scene;
+  const std::string exp = dir.write("e.json", e);
+  const std::string truth = (dir.path / "truth.json").string();
+  REQUIRE(ccdlab("truth " + scene + " --quiet -o " + truth) == 0);
+  const std::string computed = (dir.path / "computed.json").string(), reused = (dir.path / "reused.json").string();
+  REQUIRE(ccdlab("run " + exp + " --quiet --threads 1 -o " + computed) == 0);
+  std::string err;
+  SECTION("the same scene: the same counts, the source recorded") {
+    REQUIRE(ccdlab("run " + exp + " --quiet --threads 1 --truth " + truth + " -o " + reused, &err, &dir) == 0);
+    const json a = read(computed), b = read(reused);
+    CHECK(a["truth"]["source"] == "computed");
+    CHECK(b["truth"]["source"] == truth);
+    CHECK(a["truth"]["scene_sha256"] == b["truth"]["scene_sha256"]);
+    CHECK(a["truth"]["events"] == b["truth"]["events"]);
+    REQUIRE(a["records"].size() == b["records"].size());
+    for (std::size_t i = 0; i < a["records"].size(); ++i)
+      for (const char* k : {"events", "detected", "missed", "confirmed", "false_positives", "max_penetration"})
+        CHECK(a["records"][i][k] == b["records"][i][k]);
+  }
+  SECTION("another scene's truth: exit 2 naming the file, nothing written") {
+    const std::string other = (dir.path / "other.json").string(), other_truth = (dir.path / "other-truth.json").string();
+    REQUIRE(ccdlab("scene gas bodies=150 seed=4 horizon=0.5 -o " + other) == 0);
+    REQUIRE(ccdlab("truth " + other + " --quiet -o " + other_truth) == 0);
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + other_truth + " -o " + reused, &err, &dir) == 2);
+    CHECK(err.find(other_truth + ": scene_sha256: this is the ground truth of another scene") != std::string::npos);
+    CHECK_FALSE(fs::exists(reused));
+  }
+  SECTION("a version 1 file is read; its horizon is checked") {
+    json v1 = read(truth);
+    v1["format"] = "ccdlab-truth/1";
+    v1.erase("scene_sha256");
+    const std::string v1_path = dir.write("v1.json", v1);
+    REQUIRE(ccdlab("run " + exp + " --threads 1 --truth " + v1_path + " -o " + reused, &err, &dir) == 0);
+    CHECK(err.find("no scene digest") != std::string::npos);
+    CHECK(read(reused)["truth"]["events"] == read(computed)["truth"]["events"]);
+    v1["horizon"] = 0.75;  // still holds every event, but is not the scene's horizon
+    const std::string short_path = dir.write("short.json", v1);
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + short_path + " -o " + (dir.path / "x.json").string(), &err,
+                 &dir) == 2);
+    CHECK(err.find(short_path + ": horizon") != std::string::npos);
+  }
+  SECTION("a missing or malformed truth file: exit 2 naming it") {
+    CHECK(ccdlab("run " + exp + " --quiet --truth " + (dir.path / "none.json").string() + " -o " + reused, &err,
+                 &dir) == 2);
+    CHECK(err.find("none.json") != std::string::npos);
+    CHECK_FALSE(fs::exists(reused));
+  }
 }

@@ -113,6 +113,24 @@ TEST_CASE("a bounded bound with a too-small acceleration bound misses, and says 
   CHECK(f.run("enclosing_sphere/brute", 2.0, 2.0).missed == 0);
 }
 
+TEST_CASE("a record stores the options it ran with and the broad phase's counters", "[runner]") {
+  const Fixture f(head_on());
+  const ccdlab::RunRecord plain = f.run("horn:2/grid", 0.25);
+  const ccdlab::RunRecord set = f.run("horn:pieces=3/grid:cell=3,threads=2", 0.25);
+  CHECK(plain.options == nlohmann::json{{"bound", {{"pieces", 2}}}, {"broad_phase", {{"cell", 0.0}, {"threads", 1}}}});
+  CHECK(set.options == nlohmann::json{{"bound", {{"pieces", 3}}}, {"broad_phase", {{"cell", 3.0}, {"threads", 2}}}});
+  // The grid is exact whatever its cell: the same pairs, the same detection.
+  CHECK(set.candidates == plain.candidates);
+  CHECK(set.detected == plain.detected);
+  CHECK(plain.counters.empty());  // the grid has no counters of its own
+  const ccdlab::RunRecord sap = f.run("aabb/sap", 0.25);
+  REQUIRE(sap.counters.size() == 1);
+  CHECK(sap.counters[0].first == "swaps");
+  CHECK(sap.counters[0].second > 0);  // the pair passes each other: endpoints swap
+  CHECK(ccdlab::to_json(sap)["counters"] == nlohmann::json{{"swaps", sap.counters[0].second}});
+  CHECK(ccdlab::to_json(set)["options"] == set.options);
+}
+
 TEST_CASE("the sample set is every t_k = k * dt (the double product) with t_k <= T", "[runner]") {
   // 43 * 0.1 == 4.3 in double although floor(4.3 / 0.1) == 42: the sample at T is taken.
   REQUIRE(43 * 0.1 == 4.3);

@@ -1,5 +1,7 @@
 // Runs the built `ccdlab truth` binary (CCDLAB_BINARY) on good and bad scenes.
 #include <ccd/scene/scene_io.hpp>
+#include <ccd/scene/scene_digest.hpp>
+#include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/truth_io.hpp>
 
 #include <catch2/catch.hpp>
@@ -60,7 +62,7 @@ void write(const fs::path& p, const std::string& text) { std::ofstream(p) << tex
 
 }  // namespace
 
-TEST_CASE("ccdlab truth writes ccdlab-truth/1 and a summary", "[experiments][truth]") {
+TEST_CASE("ccdlab truth writes ccdlab-truth/2 with the scene digest, and a summary", "[experiments][truth]") {
   TempDir tmp;
   write(tmp / "s.json", good_scene().dump());
   const fs::path out = tmp / "t.json";
@@ -75,6 +77,9 @@ TEST_CASE("ccdlab truth writes ccdlab-truth/1 and a summary", "[experiments][tru
   CHECK((t.events[0].a == 0 && t.events[0].b == 1));
   CHECK(t.events[0].enter == Approx(4.0).margin(1e-12));
   CHECK(t.events[0].exit == Approx(6.0).margin(1e-12));
+  CHECK(t.version == 2);
+  CHECK(t.scene_sha256 == ccd::scene_digest(ccd::load_scene((tmp / "s.json").string())));
+  CHECK(t.errors.empty());  // the exact solver: no error fields
 
   const Run quiet = run(tmp, (tmp / "s.json").string() + " --quiet --threads 1 -o " + (tmp / "q.json").string());
   CHECK(quiet.status == 0);

@@ -6,7 +6,7 @@
 // neighbour scans are covered: the occupancy bitmap (dense levels) and the cursors (very
 // sparse levels, more than 2^26 cells).
 #include <ccd/broad_phase/grid.hpp>
-#include <ccd/broad_phase/peer_scene.hpp>
+#include <benchmarks/support/peer_scene.hpp>
 #include <ccd/broad_phase/sap.hpp>
 
 #include <catch2/catch.hpp>
@@ -95,21 +95,21 @@ TEST_CASE("threaded grid reports the serial grid's pairs in the same order", "[b
 
 TEST_CASE("threaded grid: N = 100000 peer scene frames 0 and 22 match the published table",
           "[broad_phase][grid][peer]") {
-  const ccd::PeerSceneReference* ref = nullptr;
-  for (const auto& r : ccd::peer_scene_references())
+  const ccdlab::bench::PeerSceneReference* ref = nullptr;
+  for (const auto& r : ccdlab::bench::peer_scene_references())
     if (r.n == 100000) ref = &r;
   REQUIRE(ref != nullptr);
-  ccd::PeerScene scene(100000, 1);
+  ccdlab::bench::PeerScene scene(100000, 1);
   std::vector<Aabb> boxes;
   std::vector<BodyPair> pairs;
   ccd::UniformGrid grid(ccd::GridOptions{.threads = 2});
   scene.boxes(boxes);
   grid.find_pairs(boxes, pairs);
   CHECK(pairs.size() == ref->pairs_0);
-  CHECK(ccd::peer_pair_checksum(pairs) == ref->checksum_0);
+  CHECK(ccdlab::bench::peer_pair_checksum(pairs) == ref->checksum_0);
   for (int f = 1; f <= 22; ++f) scene.step();
   scene.boxes(boxes);
   grid.find_pairs(boxes, pairs);
   CHECK(pairs.size() == ref->pairs_22);
-  CHECK(ccd::peer_pair_checksum(pairs) == ref->checksum_22);
+  CHECK(ccdlab::bench::peer_pair_checksum(pairs) == ref->checksum_22);
 }

@@ -1,5 +1,6 @@
 // Every registered broad phase against `brute`, pair for pair, on generated box sets and
 // frame sequences. A new registry entry is picked up by GENERATE with no edit here.
+#include <ccd/broad_phase/grid.hpp>
 #include <ccd/broad_phase/registry.hpp>
 
 #include <catch2/catch.hpp>
@@ -86,6 +87,41 @@ TEST_CASE("the registry finds its entries by name", "[broad_phase]") {
   REQUIRE(ccd::broad_phase_registry().size() >= 5);
   for (const auto& info : ccd::broad_phase_registry()) CHECK(ccd::find_broad_phase(info.name).name == info.name);
   CHECK_THROWS_AS(ccd::find_broad_phase("no-such-method"), std::invalid_argument);
+}
+
+TEST_CASE("broad-phase options are a table with units and defaults, settable by spec", "[broad_phase]") {
+  for (const ccd::BroadPhaseInfo& info : ccd::broad_phase_registry()) {
+    INFO(info.name);
+    for (const ccd::ParameterSpec& p : info.parameters) {
+      CHECK(!p.unit.empty());
+      CHECK(p.range.contains(p.default_value));
+    }
+    const ccd::BroadPhaseSpec spec = ccd::parse_broad_phase(info.name);
+    CHECK(spec.info == &info);
+    CHECK(spec.options.to_json().size() == info.parameters.size());
+  }
+  SECTION("grid:cell=2.5,threads=2") {
+    const ccd::BroadPhaseSpec spec = ccd::parse_broad_phase("grid:cell=2.5,threads=2");
+    CHECK(spec.options.to_json() == nlohmann::json{{"cell", 2.5}, {"threads", 2}});
+    // Unit boxes: the largest extent is 1, so the cell is the option's 2.5 (times 1 + 2^-20).
+    auto grid = spec.make();
+    std::vector<BodyPair> pairs;
+    grid->find_pairs(std::vector<Aabb>{{Vec3::Zero(), Vec3::Ones()}, {Vec3::Constant(4), Vec3::Constant(5)}}, pairs);
+    CHECK(dynamic_cast<const ccd::UniformGrid&>(*grid).cell_size() == Approx(2.5).epsilon(1e-5));
+    CHECK(dynamic_cast<const ccd::UniformGrid&>(*grid).cell_size() >= 2.5);
+  }
+  SECTION("the defaults") {
+    CHECK(ccd::parse_broad_phase("grid").options.to_json() == nlohmann::json{{"cell", 0.0}, {"threads", 1}});
+    CHECK(ccd::parse_broad_phase("sap").options.to_json() == nlohmann::json{{"swaps_per_endpoint", 2}});
+    CHECK(ccd::parse_broad_phase("rtree").options.to_json() == nlohmann::json::object());
+  }
+  SECTION("bad specs name the bad part") {
+    CHECK_THROWS_WITH(ccd::parse_broad_phase("grid:cel=2"), Catch::Contains("unknown parameter 'cel'"));
+    CHECK_THROWS_WITH(ccd::parse_broad_phase("grid:threads=0"), Catch::Contains("parameter 'threads'"));
+    CHECK_THROWS_WITH(ccd::parse_broad_phase("grid:2"), Catch::Contains("expected NAME=VALUE"));
+    CHECK_THROWS_WITH(ccd::parse_broad_phase("brute:x=1"), Catch::Contains("it takes none"));
+    CHECK_THROWS_WITH(ccd::parse_broad_phase("gird"), Catch::Contains("unknown broad phase 'gird'"));
+  }
 }
 
 TEST_CASE("every broad phase equals brute force on static box sets", "[broad_phase]") {

@@ -1,7 +1,6 @@
 // OutputFile: checked before the work, only regular files, never an input, no temporary
 // file left on any exit path; SHA-256 against the FIPS 180-4 examples.
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/io/sha256.hpp>
 #include <ccd/scene/input_error.hpp>
 
 #include <algorithm>
@@ -117,15 +116,4 @@ TEST_CASE("remove_pending_temporary_files removes what a signal would leave", "[
   CHECK(dir.files() == 1);
   ccd::remove_pending_temporary_files();  // what the signal handlers call
   CHECK(dir.files() == 0);
-}
-
-TEST_CASE("sha256_hex matches the FIPS 180-4 examples", "[io]") {
-  CHECK(ccd::sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  CHECK(ccd::sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  CHECK(ccd::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
-        "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-  CHECK(ccd::sha256_hex(std::string(1000000, 'a')) ==
-        "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
-  // Lengths around the padding boundary (55, 56, 64 bytes) differ from each other.
-  CHECK(ccd::sha256_hex(std::string(55, 'x')) != ccd::sha256_hex(std::string(56, 'x')));
 }

@@ -74,7 +74,7 @@ TEST_CASE("linear motion: hand-worked contacts", "[queries][sphere]") {
     const auto a = sphere({0, 0, 0}, {0, 0, 0}, 1.0);
     const auto b = sphere({10, 2.0 * (1.0 + 1e-9), 0}, {-1, 0, 0}, 1.0);
     CHECK(ccd::sphere_sphere_contact_intervals(a, b, 20.0).count == 0);
-    CHECK(ccd::sphere_sphere_first_contact(a, b, 20.0).status == ContactStatus::NoContact);
+    CHECK(ccd::sphere_sphere_first_contact(a, b, 20.0).status == ContactStatus::Miss);
   }
   SECTION("grazing just-hit: closest distance R (1 - 1e-9): short interval around 10") {
     const double y = 2.0 * (1.0 - 1e-9);

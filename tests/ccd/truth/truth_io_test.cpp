@@ -18,8 +18,14 @@ std::string error_of(const json& j) {
   return "";
 }
 
+const std::string kDigest(64, 'a');
+
 TruthFile sample() {
-  return {2.0, {{0, 3, 0.0, 0.1 + 0.2}, {1, 2, 1.0 / 3.0, 1.0 / 3.0}, {0, 1, 1.5, 2.0}}};
+  TruthFile t;
+  t.horizon = 2.0;
+  t.events = {{0, 3, 0.0, 0.1 + 0.2}, {1, 2, 1.0 / 3.0, 1.0 / 3.0}, {0, 1, 1.5, 2.0}};
+  t.scene_sha256 = kDigest;
+  return t;
 }
 
 }  // namespace
@@ -29,17 +35,62 @@ TEST_CASE("truth files round-trip bit for bit", "[truth][io]") {
   const TruthFile back = ccd::truth_from_json(json::parse(ccd::truth_to_text(t)), "t.json");
   CHECK(back.horizon == t.horizon);
   CHECK(back.events == t.events);
+  CHECK(back.scene_sha256 == kDigest);
+  CHECK(back.version == 2);
+  CHECK(back.errors.empty());
   const TruthFile back2 = ccd::truth_from_json(ccd::truth_to_json(t), "t.json");
   CHECK(back2.events == t.events);
-  const TruthFile empty{1.0, {}};
+  TruthFile empty;
+  empty.horizon = 1.0;
+  empty.scene_sha256 = kDigest;
   CHECK(ccd::truth_from_json(json::parse(ccd::truth_to_text(empty)), "t.json").events.empty());
+}
+
+TEST_CASE("truth files carry optional per-event errors, exact events write none", "[truth][io]") {
+  TruthFile t = sample();
+  // An exact truth writes the four fields per event, nothing else.
+  CHECK(ccd::truth_to_text(t).find("error") == std::string::npos);
+  t.errors = {{0.0, 0.0, false}, {1e-9, 2e-9, true}, {0.0, 0.5e-12, false}};
+  const TruthFile back = ccd::truth_from_json(json::parse(ccd::truth_to_text(t)), "t.json");
+  CHECK(back.events == t.events);
+  CHECK(back.errors == t.errors);
+  const json j = ccd::truth_to_json(t);
+  CHECK_FALSE(j["events"][0].contains("enter_error"));
+  CHECK(j["events"][1]["grazing"] == true);
+  CHECK_FALSE(j["events"][2].contains("enter_error"));
+  CHECK(j["events"][2]["exit_error"] == 0.5e-12);
+}
+
+TEST_CASE("version 1 truth files stay readable", "[truth][io]") {
+  json j = ccd::truth_to_json(sample());
+  j["format"] = "ccdlab-truth/1";
+  j.erase("scene_sha256");
+  j["events"][0]["enter_error"] = -5;  // not a version 1 field: ignored
+  const TruthFile t = ccd::truth_from_json(j, "t.json");
+  CHECK(t.version == 1);
+  CHECK(t.scene_sha256.empty());
+  CHECK(t.events == sample().events);
+  CHECK(t.errors.empty());
 }
 
 TEST_CASE("bad truth files name the file and the field", "[truth][io]") {
   json j = ccd::truth_to_json(sample());
   SECTION("wrong format") {
-    j["format"] = "ccdlab-truth/2";
-    CHECK(error_of(j) == "t.json: format: must be \"ccdlab-truth/1\"");
+    j["format"] = "ccdlab-truth/3";
+    CHECK(error_of(j) == "t.json: format: must be \"ccdlab-truth/2\" or \"ccdlab-truth/1\"");
+  }
+  SECTION("missing or malformed digest") {
+    j.erase("scene_sha256");
+    CHECK(error_of(j) == "t.json: scene_sha256: missing required field");
+    j["scene_sha256"] = std::string(64, 'A');
+    CHECK(error_of(j) == "t.json: scene_sha256: must be 64 lowercase hexadecimal digits");
+  }
+  SECTION("negative error, non-boolean grazing") {
+    j["events"][1]["exit_error"] = -1e-9;
+    CHECK(error_of(j) == "t.json: events[1].exit_error: must be >= 0");
+    j["events"][1]["exit_error"] = 1e-9;
+    j["events"][2]["grazing"] = 1;
+    CHECK(error_of(j) == "t.json: events[2].grazing: must be true or false");
   }
   SECTION("missing horizon") {
     j.erase("horizon");

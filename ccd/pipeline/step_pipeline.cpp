@@ -1,0 +1,69 @@
+#include <ccd/pipeline/step_pipeline.hpp>
+
+#include <chrono>
+
+namespace ccd {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Reads the clock only when timing is wanted.
+struct Stopwatch {
+  bool on;
+  Clock::time_point t0{};
+  explicit Stopwatch(bool enabled) : on(enabled) {}
+  void start() {
+    if (on) t0 = Clock::now();
+  }
+  void stop(double& into) const {
+    if (on) into += std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+};
+
+}  // namespace
+
+StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
+                           const NarrowTable& table)
+    : bound_(std::move(bound)),
+      knowledge_(knowledge),
+      broad_(std::move(broad)),
+      // Scenes hold spheres only: the one kind pair is looked up once, here.
+      narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)) {}
+
+void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
+                       std::span<const std::size_t> start_piece) {
+  StepTimes local;
+  Stopwatch watch(times != nullptr);
+
+  watch.start();
+  bound_->prepare(ctx, boxes_);
+  watch.stop(local.bound);
+
+  watch.start();
+  broad_->find_pairs(boxes_, out.candidates);
+  watch.stop(local.broad);
+  out.broad_stats = broad_->stats();
+
+  watch.start();
+  out.passed.clear();
+  for (const BodyPair& p : out.candidates)
+    if (bound_->test(p.a, p.b).possible()) out.passed.push_back(p);
+  watch.stop(local.bound);
+
+  watch.start();
+  out.contacts.clear();
+  const NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
+  for (const BodyPair& p : out.passed) {
+    const ContactResult c = narrow_(in, p.a, p.b);
+    if (c.found()) out.contacts.push_back({p, c});
+  }
+  watch.stop(local.narrow);
+
+  if (times) {
+    times->bound += local.bound;
+    times->broad += local.broad;
+    times->narrow += local.narrow;
+  }
+}
+
+}  // namespace ccd

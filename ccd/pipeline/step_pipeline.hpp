@@ -1,0 +1,75 @@
+#pragma once
+// One step of collision detection as a library call: prepare the bound's boxes -> broad
+// phase -> the bound's pair test -> narrow phase, each stage timed. The runner
+// (experiments/runner.cpp), the README example and kernels_bench all call this; the
+// runner only measures and keeps the ground-truth bookkeeping. docs/architecture.md
+// draws the data path.
+//
+// A step is [ctx.t0, ctx.t1] (a continuous method: a space-time bound, the narrow phase's
+// first contact over the step) or the sample time ctx.t0 == ctx.t1 (a discrete method:
+// an Instant bound, the narrow phase's sample test at t0). The bound is given ctx as is;
+// the narrow phase gets `motion` (step queries and sample tests) and ctx.start.
+// Stages and their outputs (StepResult):
+//  1. bound.prepare(ctx) -> one box per body (boxes());
+//  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
+//  3. bound.test(a, b) for every candidate -> `passed` (status Possible), in candidate order;
+//  4. narrow table entry for the kinds present (sphere x sphere: ccd/narrow/) for every
+//     passed pair -> `contacts` (found: Hit or Overlapping), in passed order.
+// Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
+// The narrow phase starts at t0 for every pair; PairTest::earliest is reported by the
+// bounds but not used to start it later.
+#include <bounds/bound.hpp>
+#include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/narrow/narrow_table.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace ccd {
+
+/// Seconds spent per stage (steady clock, wall time).
+struct StepTimes {
+  double bound = 0.0;   ///< prepare + pair tests
+  double broad = 0.0;   ///< find_pairs
+  double narrow = 0.0;  ///< narrow phase over the passed pairs
+};
+
+struct PairContact {
+  BodyPair pair;
+  ContactResult contact;
+};
+
+struct StepResult {
+  std::vector<BodyPair> candidates;   ///< broad-phase pairs
+  std::vector<BodyPair> passed;       ///< of those, pairs the bound's test let through
+  std::vector<PairContact> contacts;  ///< of those, pairs the narrow phase found in contact
+  BroadPhaseStats broad_stats;        ///< the broad phase's stats for this step
+};
+
+class StepPipeline {
+ public:
+  /// `knowledge` is the bound's (Instant: sample tests; otherwise step queries).
+  StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
+               const NarrowTable& table = narrow_table());
+
+  /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
+  /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
+  /// body's piece index at t0 (StateCursor::pieces), sparing the sample test a search.
+  void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
+           std::span<const std::size_t> start_piece = {});
+
+  bool sample_test() const { return knowledge_ == Knowledge::Instant; }
+  const Bound& bound() const { return *bound_; }
+  const BroadPhase& broad_phase() const { return *broad_; }
+  /// The boxes of the last step (one per body).
+  const std::vector<Aabb>& boxes() const { return boxes_; }
+
+ private:
+  std::unique_ptr<Bound> bound_;
+  Knowledge knowledge_;
+  std::unique_ptr<BroadPhase> broad_;
+  NarrowEntry narrow_;
+  std::vector<Aabb> boxes_;
+};
+
+}  // namespace ccd
