@@ -10,7 +10,7 @@
 namespace ccdlab {
 
 struct Experiment {
-  std::string name;
+  std::string name;                   ///< a plain file name (results/NAME.json), never a path
   /// Either a scene file path (resolved against the experiment file's folder) ...
   std::string scene_path;
   /// ... or a generator spec {"generator": NAME, params...} (scene_path empty).
@@ -28,8 +28,22 @@ struct Experiment {
 Experiment experiment_from_json(const nlohmann::json& j, const std::string& file);
 /// Reads an experiment file; a relative scene path is resolved against its folder.
 Experiment load_experiment(const std::string& path);
-/// Throws ccd::InputError if some dt exceeds the horizon.
+/// Most steps one job may take: with horizon / dt <= 2^52 the sample times k dt are
+/// distinct doubles and k is exact.
+inline constexpr double kMaxStepsPerJob = 0x1p52;
+/// Throws ccd::InputError if some dt exceeds the horizon or needs more than
+/// kMaxStepsPerJob steps (a dt the horizon cannot resolve).
 void check_dt_against_horizon(const Experiment& e, double horizon, const std::string& file);
+
+/// The work `ccdlab run` accepts without --force, in body-steps (below).
+inline constexpr double kMaxWorkWithoutForce = 1e11;
+/// Steps of one job (at most; the runner's exact count differs by at most one).
+double steps_per_job(double horizon, double dt);
+/// The work of the jobs of shard K/N (1/1: every job): steps x bodies x repeats summed over
+/// the jobs, in body-steps. At about 10-100 ns per body-step, 1e11 is
+/// hours (the default experiment is 4.3e8).
+double experiment_work(const Experiment& e, std::size_t bodies, double horizon, int shard_index = 1,
+                       int shard_count = 1);
 /// The JSON form with defaults filled in (what the results file records).
 nlohmann::json experiment_to_json(const Experiment& e);
 

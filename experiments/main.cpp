@@ -1,11 +1,16 @@
 // ccdlab: continuous collision detection laboratory. `ccdlab --help` lists the commands.
 #include "commands/command.hpp"
 
+#include <ccd/io/atomic_file.hpp>
+
+#include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <vector>
 
 int main(int argc, char** argv) {
+  ccd::install_temporary_file_cleanup();  // no FILE.tmp.* left behind by a signal
   std::vector<std::string> args(argv + 1, argv + argc);
   auto print_help = [](std::ostream& out) {
     out << "ccdlab " << ccdlab::version_string()
@@ -36,7 +41,16 @@ int main(int argc, char** argv) {
       std::cout << c.usage;
       return 0;
     }
-    return c.run(rest);
+    // Each command reports its own errors; this is the last line of defence, so that no
+    // exception ends the process without a message (and without removing temporaries).
+    try {
+      return c.run(rest);
+    } catch (const std::bad_alloc&) {
+      std::cerr << "ccdlab " << c.name << ": out of memory\n";
+    } catch (const std::exception& e) {
+      std::cerr << "ccdlab " << c.name << ": " << e.what() << "\n";
+    }
+    return 1;
   }
   std::cerr << "ccdlab: unknown command '" << args[0] << "'; valid commands:";
   for (const ccdlab::Command& c : ccdlab::commands()) std::cerr << " " << c.name;

@@ -16,8 +16,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <limits>
-#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -169,71 +167,6 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   }
   out["records"] = std::move(recs);
   out["peak_memory_bytes"] = peak_memory_bytes();
-  return out;
-}
-
-json merge_results(const std::vector<json>& shards, const std::vector<std::string>& files) {
-  if (shards.empty()) throw std::runtime_error("no results to merge");
-  if (files.size() != shards.size()) throw std::logic_error("merge_results: one file name per shard");
-  // Every field read here goes through the one JSON reader: a malformed shard names its
-  // file and the field.
-  struct Shard {
-    std::size_t jobs = 0;
-    long long count = 0, index = 0;
-  };
-  auto read_shard = [&](std::size_t s) {
-    const ccd::JsonReader r{files[s]};
-    const json& j = shards[s];
-    if (!j.is_object() || r.string(r.require(j, "format", ""), "format") != "ccdlab-results/2")
-      r.fail("format", "not a ccdlab-results/2 file");
-    const json& shard = r.require(j, "shard", "");
-    Shard out;
-    out.jobs = static_cast<std::size_t>(r.integer(r.require(shard, "jobs", "shard"), "shard.jobs", 0, 1LL << 40));
-    out.count = r.integer(r.require(shard, "count", "shard"), "shard.count", 1, 4096);
-    out.index = r.integer(r.require(shard, "index", "shard"), "shard.index", 1, out.count);
-    for (const char* key : {"experiment", "truth", "scene", "records", "peak_memory_bytes"}) r.require(j, key, "");
-    const json& records = j["records"];
-    if (!records.is_array()) r.fail("records", "must be an array");
-    for (std::size_t i = 0; i < records.size(); ++i)
-      r.integer(r.require(records[i], "job", "records[" + std::to_string(i) + "]"),
-                "records[" + std::to_string(i) + "].job", 0, static_cast<long long>(out.jobs) - 1);
-    r.integer(j["peak_memory_bytes"], "peak_memory_bytes", 0, std::numeric_limits<long long>::max());
-    return out;
-  };
-  const json& first = shards.front();
-  const Shard head = read_shard(0);
-  std::map<std::size_t, json> by_job;
-  std::set<long long> seen_shards;
-  long long peak = 0;
-  for (std::size_t s = 0; s < shards.size(); ++s) {
-    const json& r = shards[s];
-    const Shard sh = read_shard(s);
-    const std::string& which = files[s];
-    if (r["experiment"] != first["experiment"])
-      throw ccd::InputError(which, "experiment", "a different experiment than " + files[0]);
-    if (r["truth"]["events"] != first["truth"]["events"] || r["scene"]["bodies"] != first["scene"]["bodies"])
-      throw ccd::InputError(which, "truth", "a different scene or ground truth than " + files[0]);
-    if (sh.count != head.count)
-      throw ccd::InputError(which, "shard.count", "sharded " + std::to_string(sh.count) + " ways, " + files[0] + " " +
-                                                      std::to_string(head.count) + " ways");
-    if (!seen_shards.insert(sh.index).second)
-      throw ccd::InputError(which, "shard.index", "shard " + std::to_string(sh.index) + " given twice");
-    for (const json& rec : r["records"]) {
-      const auto job = rec["job"].get<std::size_t>();
-      if (!by_job.emplace(job, rec).second)
-        throw ccd::InputError(which, "records", "job " + std::to_string(job) + " twice");
-    }
-    peak = std::max(peak, r["peak_memory_bytes"].get<long long>());
-  }
-  if (by_job.size() != head.jobs)
-    throw std::runtime_error("merged " + std::to_string(by_job.size()) + " of " + std::to_string(head.jobs) +
-                             " jobs: a shard is missing");
-  json out = first;
-  out["shard"] = {{"index", 1}, {"count", 1}, {"jobs", head.jobs}, {"merged_from", shards.size()}};
-  json recs = json::array();
-  for (auto& [job, rec] : by_job) recs.push_back(rec);
-  out["records"] = std::move(recs);
-  out["peak_memory_bytes"] = peak;
   return out;
 }
 

@@ -44,10 +44,4 @@ bool check_stored_truth(const ccd::TruthFile& truth, const ccd::Scene& scene, co
 /// Runs the experiment. Returns a null JSON value if cancelled.
 nlohmann::json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptions& options);
 
-/// Joins shard results of one experiment (ccdlab merge); `files` names each shard in
-/// messages. Throws ccd::InputError naming the file and field for a malformed shard or
-/// shards of different experiments, overlapping shards or jobs; std::runtime_error when a
-/// shard is missing.
-nlohmann::json merge_results(const std::vector<nlohmann::json>& shards, const std::vector<std::string>& files);
-
 }  // namespace ccdlab

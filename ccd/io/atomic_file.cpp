@@ -1,66 +1,212 @@
 #include <ccd/io/atomic_file.hpp>
 
+#include <ccd/scene/input_error.hpp>
+
+#include <array>
 #include <atomic>
 #include <cerrno>
-#include <cstdio>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <iostream>
-#include <mutex>
-#include <set>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace ccd {
 namespace {
 
-std::mutex pending_mutex;
-std::set<std::string>& pending() {
-  static std::set<std::string> files;
-  return files;
+namespace fs = std::filesystem;
+
+// Temporary files being written, in slots a signal handler may read: a slot's path is
+// written while its state is Claimed and read only while it is Active (lock-free atomics
+// and unlink are async-signal-safe; a std::set under a mutex is not).
+enum SlotState : int { Free = 0, Claimed = 1, Active = 2 };
+struct Slot {
+  std::atomic<int> state{Free};
+  char path[4096];
+};
+std::array<Slot, 16> g_slots;
+static_assert(std::atomic<int>::is_always_lock_free);
+
+int claim_slot(const std::string& path) {
+  if (path.size() >= sizeof(Slot::path)) throw InputError(path, "", "file name too long");
+  for (std::size_t i = 0; i < g_slots.size(); ++i) {
+    int expected = Free;
+    if (g_slots[i].state.compare_exchange_strong(expected, Claimed)) {
+      std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
+      return static_cast<int>(i);  // Active once the file exists (activate_slot)
+    }
+  }
+  throw std::runtime_error(path + ": more than " + std::to_string(g_slots.size()) + " output files open at once");
+}
+
+void activate_slot(int slot) { g_slots[static_cast<std::size_t>(slot)].state.store(Active); }
+
+void release_slot(int slot) {
+  if (slot >= 0) g_slots[static_cast<std::size_t>(slot)].state.store(Free);
+}
+
+std::string reason() { return std::strerror(errno); }
+
+bool same_file(const struct stat& a, const struct stat& b) { return a.st_dev == b.st_dev && a.st_ino == b.st_ino; }
+
+// Signals after which the process ends anyway: remove the temporary files, then restore
+// the previous action and deliver the signal to it.
+constexpr int kEndingSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT,   SIGPIPE, SIGALRM,
+                                   SIGUSR1, SIGUSR2, SIGXCPU, SIGXFSZ, SIGVTALRM, SIGPROF};
+constexpr int kFaultSignals[] = {SIGABRT, SIGSEGV, SIGBUS, SIGFPE, SIGILL};
+struct sigaction g_previous[NSIG];
+
+extern "C" void on_ending_signal(int sig) {
+  remove_pending_temporary_files();
+  ::sigaction(sig, &g_previous[sig], nullptr);
+  ::raise(sig);  // blocked while this handler runs: delivered to the previous action on return
+}
+
+extern "C" void on_fault_signal(int sig) {
+  remove_pending_temporary_files();
+  // A fault repeats when the faulting instruction runs again, now with the previous
+  // handler (the default action, or a sanitizer's report with the original address);
+  // abort() raises SIGABRT again itself.
+  ::sigaction(sig, &g_previous[sig], nullptr);
 }
 
 }  // namespace
 
-void write_file_atomically(const std::string& path, const std::string& text) {
-  if (path == "-") {
+OutputFile::OutputFile(std::string path, std::span<const std::string> inputs, bool create_folder)
+    : path_(std::move(path)) {
+  if (path_ == "-") return;
+  if (path_.empty()) throw InputError("-o", "", "the output file name is empty");
+  target_ = path_;
+  struct stat st {};
+  if (::lstat(path_.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(path_, ec);
+    if (ec) throw InputError(path_, "", "cannot follow the symbolic link: " + ec.message());
+    target_ = resolved.string();
+  }
+  const bool exists = ::stat(target_.c_str(), &st) == 0;
+  if (exists && !S_ISREG(st.st_mode))
+    throw InputError(path_, "", S_ISDIR(st.st_mode) ? "is a folder; the output must be a file"
+                                                     : "is not a regular file (a device or a pipe); ccdlab writes only "
+                                                       "regular files (use -o - for standard output)");
+  if (exists) {
+    for (const std::string& input : inputs) {
+      struct stat in {};
+      if (input != "-" && ::stat(input.c_str(), &in) == 0 && same_file(st, in))
+        throw InputError(path_, "", "is an input of this command (" + input + "); choose another output file");
+    }
+  }
+  const fs::path folder = fs::path(target_).parent_path();
+  if (create_folder && !folder.empty()) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw InputError(path_, "", "cannot create the folder '" + folder.string() + "': " + ec.message());
+  }
+  // Unique temporary name beside the target (O_EXCL: never opens what is already there).
+  static std::atomic<unsigned> counter{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    const std::string name = target_ + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    slot_ = claim_slot(name);
+    fd_ = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
+    if (fd_ >= 0) {
+      activate_slot(slot_);
+      temporary_ = name;
+      return;
+    }
+    const int err = errno;
+    release_slot(slot_);
+    slot_ = -1;
+    if (err != EEXIST) {
+      errno = err;
+      throw InputError(path_, "", "cannot write to the folder '" + (folder.empty() ? std::string(".") : folder.string()) +
+                                      "': " + reason());
+    }
+  }
+  throw InputError(path_, "", "cannot create a temporary file beside it");
+}
+
+OutputFile::~OutputFile() {
+  if (!committed_) discard();
+}
+
+void OutputFile::discard() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+  if (!temporary_.empty()) ::unlink(temporary_.c_str());
+  release_slot(slot_);
+  slot_ = -1;
+}
+
+void OutputFile::commit(std::string_view text) {
+  if (committed_) throw std::logic_error(path_ + ": written twice");
+  if (is_stdout()) {
     std::cout << text;
     std::cout.flush();
+    if (!std::cout) throw std::runtime_error("standard output: cannot write");
+    committed_ = true;
     return;
   }
-  const std::string tmp = path + ".tmp." + std::to_string(::getpid());
-  {
-    std::lock_guard<std::mutex> lock(pending_mutex);
-    pending().insert(tmp);
-  }
   auto fail = [&](const char* what) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    std::lock_guard<std::mutex> lock(pending_mutex);
-    pending().erase(tmp);
-    throw std::runtime_error(path + ": " + what + ": " + reason);
+    const std::string why = reason();
+    discard();
+    throw std::runtime_error(path_ + ": " + what + ": " + why);
   };
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) fail("cannot create");
   std::size_t done = 0;
   while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
     if (n < 0) {
       if (errno == EINTR) continue;
-      ::close(fd);
       fail("cannot write");
     }
     done += static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) fail("cannot write");
-  if (::rename(tmp.c_str(), path.c_str()) != 0) fail("cannot rename into place");
-  std::lock_guard<std::mutex> lock(pending_mutex);
-  pending().erase(tmp);
+  if (::fsync(fd_) != 0) fail("cannot write");
+  const int fd = fd_;
+  fd_ = -1;
+  if (::close(fd) != 0) fail("cannot write");
+  // The destination may have changed since it was checked: still never rename over
+  // anything but a regular file.
+  struct stat st {};
+  if (::stat(target_.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+    errno = EEXIST;
+    fail("is no longer a regular file");
+  }
+  if (::rename(temporary_.c_str(), target_.c_str()) != 0) fail("cannot rename into place");
+  temporary_.clear();
+  release_slot(slot_);
+  slot_ = -1;
+  committed_ = true;
+  // Make the rename itself durable (best effort: some file systems refuse a folder fsync).
+  const fs::path folder = fs::path(target_).parent_path();
+  const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
 }
 
-void remove_pending_temporary_files() {
-  // Called on SIGINT/SIGTERM: unlink is async-signal-safe; the set is not modified here.
-  for (const std::string& f : pending()) ::unlink(f.c_str());
+void write_file_atomically(const std::string& path, std::string_view text) { OutputFile(path).commit(text); }
+
+void install_temporary_file_cleanup() {
+  auto install = [](int sig, void (*handler)(int)) {
+    struct sigaction current {};
+    if (::sigaction(sig, nullptr, &current) != 0 || current.sa_handler == SIG_IGN) return;
+    g_previous[sig] = current;
+    struct sigaction action {};
+    action.sa_handler = handler;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(sig, &action, nullptr);
+  };
+  for (int sig : kEndingSignals) install(sig, on_ending_signal);
+  for (int sig : kFaultSignals) install(sig, on_fault_signal);
+}
+
+void remove_pending_temporary_files() noexcept {
+  for (Slot& s : g_slots)
+    if (s.state.load() == Active) ::unlink(s.path);
 }
 
 }  // namespace ccd

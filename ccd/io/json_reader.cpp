@@ -1,11 +1,137 @@
 #include <ccd/io/json_reader.hpp>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <limits>
+#include <set>
+#include <streambuf>
+#include <sys/stat.h>
+#include <vector>
 
 namespace ccd {
 
 using nlohmann::json;
+
+namespace {
+
+// Follows the parse with a stack of open objects and arrays, so that a duplicate key or
+// too deep a nesting is reported with the field path where it happens.
+class StrictParse {
+ public:
+  explicit StrictParse(const std::string& file) : file_(file) {}
+
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (frames_.size() >= static_cast<std::size_t>(kMaxJsonDepth))
+          throw InputError(file_, path(), "nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        frames_.push_back({event == json::parse_event_t::object_start, {}, {}, 0});
+        break;
+      case json::parse_event_t::key: {
+        Frame& top = frames_.back();
+        top.key = parsed.get<std::string>();
+        if (!top.keys.insert(top.key).second) throw InputError(file_, path(), "key given twice in one object");
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::value:
+        element_done();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;      // object: the key being read
+    std::size_t index;    // array: elements read so far
+  };
+  void element_done() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  }
+  std::string path() const {
+    std::string p;
+    for (const Frame& f : frames_) {
+      if (f.object && !f.key.empty()) p += (p.empty() ? "" : ".") + f.key;
+      if (!f.object) p += "[" + std::to_string(f.index) + "]";
+    }
+    return p;
+  }
+
+  const std::string& file_;
+  std::vector<Frame> frames_;
+};
+
+template <class Input>
+json parse_strictly(Input&& input, const std::string& file) {
+  StrictParse strict(file);
+  try {
+    return json::parse(std::forward<Input>(input), std::ref(strict));
+  } catch (const json::exception& e) {
+    throw InputError(file, "", std::string("malformed JSON: ") + e.what());
+  }
+}
+
+// A stream buffer over a file that reports end of input after `limit` bytes and says so.
+class LimitedFileBuffer : public std::streambuf {
+ public:
+  LimitedFileBuffer(std::filebuf& in, std::uint64_t limit) : in_(in), left_(limit) {}
+  bool exceeded() const { return exceeded_; }
+
+ protected:
+  int_type underflow() override {
+    if (gptr() < egptr()) return traits_type::to_int_type(*gptr());
+    if (left_ == 0) {
+      exceeded_ = in_.sgetc() != traits_type::eof();
+      return traits_type::eof();
+    }
+    const std::streamsize n = in_.sgetn(buffer_, static_cast<std::streamsize>(std::min<std::uint64_t>(sizeof buffer_, left_)));
+    if (n <= 0) return traits_type::eof();
+    left_ -= static_cast<std::uint64_t>(n);
+    setg(buffer_, buffer_, buffer_ + n);
+    return traits_type::to_int_type(*gptr());
+  }
+
+ private:
+  std::filebuf& in_;
+  std::uint64_t left_;
+  bool exceeded_ = false;
+  char buffer_[1 << 16];
+};
+
+}  // namespace
+
+json parse_json_text(std::string_view text, const std::string& file) {
+  if (text.size() > kMaxJsonBytes)
+    throw InputError(file, "", "larger than " + std::to_string(kMaxJsonBytes) + " bytes");
+  return parse_strictly(text, file);
+}
+
+json read_json_file(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError(path, "", std::string("cannot open file: ") + std::strerror(errno));
+  if (S_ISDIR(st.st_mode)) throw InputError(path, "", "cannot open file: is a folder");
+  std::filebuf file;
+  if (!file.open(path, std::ios::in | std::ios::binary))
+    throw InputError(path, "", std::string("cannot open file: ") + std::strerror(errno));
+  LimitedFileBuffer limited(file, kMaxJsonBytes);
+  std::istream in(&limited);
+  try {
+    return parse_strictly(in, path);
+  } catch (const InputError&) {
+    if (limited.exceeded()) throw InputError(path, "", "larger than " + std::to_string(kMaxJsonBytes) + " bytes");
+    throw;
+  }
+}
 
 const json& JsonReader::require(const json& obj, const char* key, const std::string& path) const {
   auto it = obj.find(key);
@@ -36,6 +162,13 @@ std::uint32_t JsonReader::index(const json& v, const std::string& field) const {
   const std::uint64_t x = v.get<std::uint64_t>();
   if (x > std::numeric_limits<std::uint32_t>::max()) fail(field, "body index too large");
   return static_cast<std::uint32_t>(x);
+}
+
+std::uint64_t JsonReader::count(const json& v, const std::string& field, std::uint64_t max) const {
+  if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<std::int64_t>() < 0) ||
+      v.get<std::uint64_t>() > max)
+    fail(field, "must be an integer in [0, " + std::to_string(max) + "]");
+  return v.get<std::uint64_t>();
 }
 
 long long JsonReader::integer(const json& v, const std::string& field, long long lo, long long hi) const {

@@ -187,9 +187,7 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
       pieces_.push_back(piece);
       lows_.push_back(low);
       if (pieces_.size() - start > options.max_pieces_per_body)
-        throw std::runtime_error("body " + std::to_string(i) + " needs more than " +
-                                 std::to_string(options.max_pieces_per_body) +
-                                 " trajectory pieces (wall reflections) over the horizon");
+        throw TooManyPieces(i, options.max_pieces_per_body);
       // The next piece starts from the body's own acceleration: the resting rule is checked afresh.
       State next{t_next, exact_position(piece, low, t_next), exact_velocity(piece, low, t_next), st.a};
       carried_window = 0.0;

@@ -26,13 +26,15 @@
 // rounding of the double-double operations carried from break to break (about
 // 32 u^2 of the magnitudes per break, u = 2^-53).
 // Limits: at most `max_pieces_per_body` pieces per body (a body that would need more
-// throws std::runtime_error naming it).
+// throws TooManyPieces naming it: a ball bouncing ever faster).
 #include <ccd/geometry/aabb.hpp>
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/scene/scene.hpp>
 
 #include <cstdint>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace ccd {
@@ -51,6 +53,21 @@ struct Piece {
   Vec3 velocity(double t) const { return v + a * (t - t0); }
   /// Tight box of the centre's path over [u0, u1] ⊆ [t0, t1] (endpoints and the vertex).
   Aabb centre_bounds(double u0, double u1) const;
+};
+
+/// A body needs more than TrajectoryOptions::max_pieces_per_body pieces.
+class TooManyPieces : public std::runtime_error {
+ public:
+  TooManyPieces(std::size_t body, std::size_t limit)
+      : std::runtime_error("body " + std::to_string(body) + " needs more than " + std::to_string(limit) +
+                           " trajectory pieces (wall reflections) over the horizon"),
+        body_(body), limit_(limit) {}
+  std::size_t body() const { return body_; }
+  std::size_t limit() const { return limit_; }
+
+ private:
+  std::size_t body_;
+  std::size_t limit_;
 };
 
 /// The trailing parts of a piece's start state and the model's error at its ends.

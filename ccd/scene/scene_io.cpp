@@ -1,12 +1,12 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstdio>
 
 namespace ccd {
 namespace {
@@ -68,10 +68,17 @@ Scene scene_from_json(const json& j, const std::string& file) {
 
 void validate_scene(const Scene& s, const std::string& file) {
   Reader r{file};
-  auto finite3 = [&](const Vec3& v, const std::string& f) {
-    if (!v.allFinite()) r.fail(f, "must be finite");
+  const std::string limit = "1e+30";  // kMaxSceneMagnitude, as the message prints it
+  static_assert(kMaxSceneMagnitude == 1e30);
+  auto magnitude = [&](double x, const std::string& f) {
+    if (!std::isfinite(x)) r.fail(f, "must be finite");
+    if (std::fabs(x) > kMaxSceneMagnitude) r.fail(f, "magnitude above the limit " + limit);
   };
-  if (!std::isfinite(s.horizon) || s.horizon <= 0.0) r.fail("horizon", "must be > 0");
+  auto finite3 = [&](const Vec3& v, const std::string& f) {
+    for (int k = 0; k < 3; ++k) magnitude(v[k], f + "[" + std::to_string(k) + "]");
+  };
+  magnitude(s.horizon, "horizon");
+  if (s.horizon <= 0.0) r.fail("horizon", "must be > 0");
   finite3(s.gravity, "gravity");
   if (s.box) {
     finite3(s.box->min, "box.min");
@@ -80,17 +87,39 @@ void validate_scene(const Scene& s, const std::string& file) {
       if (!(s.box->min[a] < s.box->max[a]))
         r.fail("box", "min must be < max on every axis (axis " + std::to_string(a) + ")");
   }
+  const double T = s.horizon;
+  // How far a body can travel over the horizon: |v| T and |a + gravity| T^2 / 2 (every
+  // acceleration it takes), each within the limit, so that every position, distance and
+  // solver coefficient stays far from overflow.
+  auto reach = [&](double travelled, const std::string& f, const char* what) {
+    if (!(travelled <= kMaxSceneMagnitude)) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", travelled);
+      r.fail(f, std::string(what) + " is " + text + " m, above the limit " + limit + " m");
+    }
+  };
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
     const std::string p = body_path(i);
-    if (!std::isfinite(b.radius) || b.radius <= 0.0) r.fail(p + ".radius", "must be > 0");
+    magnitude(b.radius, p + ".radius");
+    if (b.radius <= 0.0) r.fail(p + ".radius", "must be > 0");
     finite3(b.position, p + ".position");
     finite3(b.velocity, p + ".velocity");
     finite3(b.acceleration, p + ".acceleration");
+    reach(b.velocity.norm() * T, p + ".velocity", "|velocity| * horizon");
+    reach((b.acceleration + s.gravity).norm() * (0.5 * T * T), p + ".acceleration",
+          "|acceleration + gravity| * horizon^2 / 2");
     if (s.box) {
       for (int a = 0; a < 3; ++a) {
         if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])
           r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
+        // A body as wide as the box on an axis touches both walls at once: it cannot move
+        // along that axis (it would reflect at both walls in zero time and leave the box).
+        // Wall planes as the trajectory takes them: the exact sums, compared exactly.
+        const Dd room = two_sum(s.box->max[a], -b.radius) - two_sum(s.box->min[a], b.radius);
+        if (!(room.value() > 0.0) && b.velocity[a] != 0.0)
+          r.fail(p + ".velocity[" + std::to_string(a) + "]",
+                 "must be 0: the body fills the box on this axis (no room to move between the walls)");
       }
     }
     double prev = 0.0;
@@ -100,20 +129,10 @@ void validate_scene(const Scene& s, const std::string& file) {
       if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
         r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
       finite3(c.acceleration, kp + ".acceleration");
+      reach((c.acceleration + s.gravity).norm() * (0.5 * T * T), kp + ".acceleration",
+            "|acceleration + gravity| * horizon^2 / 2");
       prev = c.t;
     }
-  }
-}
-
-json read_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open file");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  try {
-    return json::parse(ss.str());
-  } catch (const json::exception& e) {
-    throw InputError(path, "", std::string("malformed JSON: ") + e.what());
   }
 }
 

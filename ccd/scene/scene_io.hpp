@@ -1,17 +1,25 @@
 #pragma once
 // Reading and writing `ccdlab-scene/1` files (format in docs/formats.md).
 //
-// Validation: malformed JSON, a missing or mistyped required field, NaN or infinity,
+// Validation: malformed JSON (ccd/io/json_reader.hpp: duplicate keys included), a missing
+// or mistyped required field, NaN or infinity, a magnitude above kMaxSceneMagnitude,
 // radius <= 0, horizon <= 0, a box with min >= max on some axis, a body outside the box
-// (centre closer than its radius to a wall), acceleration changes out of order or
-// outside (0, horizon): each throws InputError naming the file, the field path and
-// the body index (`bodies[3].radius`). Unknown fields are ignored.
+// (centre closer than its radius to a wall), a body that could travel further than
+// kMaxSceneMagnitude over the horizon (|v| T or |a + gravity| T^2 / 2), acceleration
+// changes out of order or outside (0, horizon): each throws InputError naming the file,
+// the field path and the body index (`bodies[3].radius`). Unknown fields are ignored.
+#include <ccd/io/json_reader.hpp>  // read_json_file
 #include <ccd/scene/scene.hpp>
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 namespace ccd {
+
+/// Largest accepted magnitude of every number of a scene (m, m/s, m/s^2, s) and of the
+/// distance a body can travel over the horizon. Lengths below 1e30 keep their squares
+/// (1e60) and fourth powers (1e120), which the exact solvers form, far from overflow.
+inline constexpr double kMaxSceneMagnitude = 1e30;
 
 /// Parses a scene from JSON; `file` is used only in error messages.
 Scene scene_from_json(const nlohmann::json& j, const std::string& file);
@@ -23,8 +31,5 @@ void validate_scene(const Scene& scene, const std::string& file);
 nlohmann::json scene_to_json(const Scene& scene);
 /// Writes the scene atomically (see ccd/io/atomic_file.hpp).
 void save_scene(const Scene& scene, const std::string& path);
-
-/// Reads a JSON file, throwing InputError with the parser's position on bad syntax.
-nlohmann::json read_json_file(const std::string& path);
 
 }  // namespace ccd

@@ -32,6 +32,15 @@ double parse_number(std::string_view name, std::string_view token) {
   const char* last = token.data() + token.size();
   const auto [end, ec] = std::from_chars(first, last, x);
   if (token.empty() || ec != std::errc() || end != last) fail(name, in_quotes(token) + " is not a number");
+  // An integer written out beyond 2^53 would be rounded silently on its way to a double
+  // (seed=9007199254740993 would run as 9007199254740992).
+  std::string_view digits = token.substr(token[0] == '-' ? 1 : 0);
+  if (!digits.empty() && digits.find_first_not_of("0123456789") == std::string_view::npos) {
+    digits.remove_prefix(std::min(digits.find_first_not_of('0'), digits.size()));
+    constexpr std::string_view two_53 = "9007199254740992";
+    if (digits.size() > two_53.size() || (digits.size() == two_53.size() && digits > two_53))
+      fail(name, "integer " + std::string(token) + " is too large to be exact (|x| > 2^53)");
+  }
   return x;
 }
 

@@ -1,13 +1,14 @@
 // `ccdlab merge SHARD.json... -o RESULTS.json`
 #include "command.hpp"
 
-#include "../run_experiment.hpp"
+#include "../results_file.hpp"
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
-#include <ccd/scene/scene_io.hpp>
 
 #include <iostream>
+#include <new>
 
 namespace ccdlab {
 namespace {
@@ -22,6 +23,9 @@ int run_merge(std::span<const std::string> args) {
         return kExitBadInput;
       }
       out = args[++i];
+    } else if (args[i].size() > 1 && args[i][0] == '-') {
+      std::cerr << "ccdlab merge: unknown option '" << args[i] << "' (see ccdlab merge --help)\n";
+      return kExitBadInput;
     } else {
       inputs.push_back(args[i]);
     }
@@ -31,14 +35,21 @@ int run_merge(std::span<const std::string> args) {
     return kExitBadInput;
   }
   try {
-    std::vector<nlohmann::json> shards;
-    for (const std::string& f : inputs) shards.push_back(ccd::read_json_file(f));
-    ccd::write_file_atomically(out, merge_results(shards, inputs).dump(1) + "\n");
-  } catch (const std::exception& e) {
+    ccd::OutputFile output(out, inputs);
+    std::vector<ResultsShard> shards;
+    for (const std::string& f : inputs) shards.push_back({f, ccd::read_json_file(f)});
+    output.commit(merge_results(shards).dump(1) + "\n");
+  } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab merge: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab merge: out of memory reading " << inputs.size() << " shard files\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ccdlab merge: " << e.what() << "\n";
+    return 1;
   }
-  std::cout << "results: " << out << "\n";
+  if (out != "-") std::cout << "results: " << out << "\n";
   return 0;
 }
 
@@ -48,8 +59,13 @@ extern const Command kMergeCommand = {
     "merge", "join the shard results of one experiment (ccdlab run --shard K/N)",
     "usage: ccdlab merge SHARD.json... -o RESULTS.json\n"
     "\n"
-    "Checks that every input is a shard of the same experiment and scene, that no job\n"
-    "appears twice and none is missing, and writes one results file ordered by job.\n",
+    "Checks every input as a ccdlab-results/1 file (every field with its type, job indices\n"
+    "within the experiment and owned by the shard), that all are shards of the same\n"
+    "experiment, scene (contents, by digest) and ground truth, that no shard appears twice\n"
+    "and none is missing, and writes one results file ordered by job ('-' = standard\n"
+    "output; never over an input).\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_merge};
 
 }  // namespace ccdlab

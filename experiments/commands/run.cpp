@@ -4,6 +4,7 @@
 #include "../run_experiment.hpp"
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/integer_text.hpp>
@@ -11,8 +12,10 @@
 
 #include <atomic>
 #include <csignal>
-#include <filesystem>
+#include <cstdio>
 #include <iostream>
+#include <new>
+#include <thread>
 #include <unistd.h>
 
 namespace ccdlab {
@@ -40,6 +43,7 @@ int run_run(std::span<const std::string> args) {
     return kExitBadInput;
   };
   std::string experiment_path, out_path, truth_path;
+  bool force = false;
   RunOptions options;
   options.threads = static_cast<int>(ccd::resolve_threads(0));
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -68,6 +72,8 @@ int run_run(std::span<const std::string> args) {
       truth_path = *v;
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
+    } else if (a == "--force") {
+      force = true;
     } else if (!a.empty() && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (experiment_path.empty()) {
@@ -78,14 +84,18 @@ int run_run(std::span<const std::string> args) {
   }
   if (experiment_path.empty()) return usage_error("missing EXPERIMENT.json");
 
-  Experiment e;
-  ccd::Scene scene;
-  ccd::TruthFile stored_truth;
+  // What is being done, for the one line that says what was too big if memory runs out.
+  std::string doing = "reading " + experiment_path;
+  ccd::TruthFile stored_truth;  // --truth FILE: read before the run, used by it
   try {
-    e = load_experiment(experiment_path);
-    scene = load_experiment_scene(e, experiment_path);
+    const Experiment e = load_experiment(experiment_path);
+    if (!e.scene_path.empty()) doing = "reading the scene " + e.scene_path;
+    else doing = "generating the scene " + e.scene_generator.dump();
+    const ccd::Scene scene = load_experiment_scene(e, experiment_path);
     check_dt_against_horizon(e, scene.horizon, experiment_path);
+
     if (!truth_path.empty()) {
+      doing = "reading " + truth_path;
       stored_truth = ccd::load_truth(truth_path);
       if (!check_stored_truth(stored_truth, scene, truth_path) && !options.quiet)
         std::cerr << "ccdlab run: note: " << truth_path << " is " << ccd::kTruthFormatV1
@@ -93,54 +103,77 @@ int run_run(std::span<const std::string> args) {
       options.truth = &stored_truth;
       options.truth_file = truth_path;
     }
+
+    // The work, before any of it: refused past the limit unless forced.
+    const double work = experiment_work(e, scene.bodies.size(), scene.horizon, options.shard.index,
+                                        options.shard.count);
+    const double most_steps = steps_per_job(scene.horizon, e.dt.back());
+    auto number = [](double x) {
+      char text[32];
+      std::snprintf(text, sizeof text, "%.3g", x);
+      return std::string(text);
+    };
+    if (work > kMaxWorkWithoutForce && !force)
+      throw ccd::InputError(experiment_path, "dt",
+                            "the run needs " + number(work) + " body-steps (" + std::to_string(scene.bodies.size()) +
+                                " bodies, up to " + number(most_steps) + " steps per job at dt = " +
+                                number(e.dt.back()) + "), above the limit " + number(kMaxWorkWithoutForce) +
+                                " without --force");
+
+    if (out_path.empty()) {
+      out_path = "results/" + e.name +
+                 (options.shard.count > 1 ? ".shard" + std::to_string(options.shard.index) + "of" +
+                                                std::to_string(options.shard.count)
+                                          : std::string()) +
+                 ".json";
+    }
+    const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path,
+                                  truth_path.empty() ? std::string("-") : truth_path};
+    ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
+    if (!options.quiet)
+      std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
+                << number(most_steps) << " steps per job)\n";
+
+    options.cancel = &g_cancel;
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+    doing = "running " + std::to_string(e.methods.size() * e.dt.size()) + " jobs over " +
+            std::to_string(scene.bodies.size()) + " bodies";
+    nlohmann::json results;
+    try {
+      results = run_experiment(e, scene, options);
+    } catch (const ccd::TooManyPieces& err) {
+      throw ccd::InputError(e.scene_path.empty() ? experiment_path : e.scene_path,
+                            (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
+                            "needs more than " + std::to_string(err.limit()) +
+                                " trajectory pieces over the horizon (wall reflections and acceleration changes; "
+                                "a body bouncing ever faster or too fast for its box)");
+    }
+    if (results.is_null()) {
+      std::cerr << "ccdlab run: interrupted; no results written\n";
+      return 130;
+    }
+    doing = "writing " + out_path;
+    output.commit(results.dump(1) + "\n");
+    if (!options.quiet) {
+      std::size_t flagged = 0;
+      for (const auto& r : results["records"]) flagged += !r["self_check"]["ok"].get<bool>();
+      std::cerr << "ccdlab: " << results["records"].size() << " records, ground truth "
+                << results["truth"]["events"] << " events"
+                << (flagged ? ", " + std::to_string(flagged) + " records FAILED the self-check" : std::string())
+                << "\n";
+    }
   } catch (const ccd::InputError& err) {
     std::cerr << "ccdlab run: " << err.what() << "\n";
     return kExitBadInput;
-  }
-  if (out_path.empty()) {
-    out_path = "results/" + e.name + (options.shard.count > 1 ? ".shard" + std::to_string(options.shard.index) +
-                                                                     "of" + std::to_string(options.shard.count)
-                                                               : std::string()) + ".json";
-  }
-  const auto parent = std::filesystem::path(out_path).parent_path();
-  std::error_code ec;
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  if (ec || (!parent.empty() && ::access(parent.c_str(), W_OK) != 0)) {
-    std::cerr << "ccdlab run: " << out_path << ": cannot write to folder '" << parent.string() << "'\n";
-    return kExitBadInput;
-  }
-
-  options.cancel = &g_cancel;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
-  nlohmann::json results;
-  try {
-    results = run_experiment(e, scene, options);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab run: out of memory " << doing << "\n";
+    return 1;
   } catch (const std::exception& err) {
     std::cerr << "ccdlab run: " << err.what() << "\n";
     return 1;
   }
-  if (results.is_null()) {
-    std::cerr << "ccdlab run: interrupted; no results written\n";
-    return 130;
-  }
-  try {
-    ccd::write_file_atomically(out_path, results.dump(1) + "\n");
-  } catch (const std::exception& err) {
-    std::cerr << "ccdlab run: " << err.what() << "\n";
-    return 1;
-  }
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-  if (!options.quiet) {
-    std::size_t flagged = 0;
-    for (const auto& r : results["records"]) flagged += !r["self_check"]["ok"].get<bool>();
-    std::cerr << "ccdlab: " << results["records"].size() << " records, ground truth "
-              << results["truth"]["events"] << " events"
-              << (flagged ? ", " + std::to_string(flagged) + " records FAILED the self-check" : std::string())
-              << "\n";
-  }
-  std::cout << "results: " << out_path << "\n";
+  if (out_path != "-") std::cout << "results: " << out_path << "\n";
   return 0;
 }
 
@@ -149,12 +182,15 @@ int run_run(std::span<const std::string> args) {
 extern const Command kRunCommand = {
     "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
     "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
+    "                  [--force]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
     "ground truth and writes a ccdlab-results/2 file (docs/experiments.md).\n"
     "\n"
-    "  -o, --output FILE  results file (default results/NAME.json); written atomically,\n"
-    "                     never partially (Ctrl-C leaves no file)\n"
+    "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
+    "                     checked before the run (a regular file, not an input, in a folder\n"
+    "                     that takes a file), written atomically, never partially (Ctrl-C\n"
+    "                     leaves no file)\n"
     "  --threads N        worker threads over (method, dt) jobs and for the ground truth\n"
     "                     (default: all cores); counts do not depend on N\n"
     "  --shard K/N        run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
@@ -164,6 +200,8 @@ extern const Command kRunCommand = {
     "                     (else exit 2); a ccdlab-truth/1 file is checked only for its\n"
     "                     horizon and body indices\n"
     "  -q, --quiet        no progress on stderr\n"
+    "  --force            run even when the work estimate (bodies x steps, summed over the\n"
+    "                     jobs) is above 1e11 body-steps\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",
     run_run};

@@ -1,11 +1,15 @@
 // `ccdlab scene GENERATOR [NAME=VALUE ...] -o SCENE.json`: writes a generated scene.
 #include "command.hpp"
 
+#include <ccd/io/atomic_file.hpp>
+#include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <experiments/generators/registry.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +22,7 @@ std::string make_scene_usage() {
   std::string text =
       "usage: ccdlab scene GENERATOR [NAME=VALUE ...] -o SCENE.json\n\n"
       "Writes a generated scene (format ccdlab-scene/1) atomically; -o - writes to standard output.\n"
+      "The output is checked before generating: a regular file, in a folder that takes a file.\n"
       "Values are numbers; offset takes one number (all axes) or three: offset=1e6,0,-1e6.\n"
       "The same parameters give the same file (docs/generators.md lists the draw order).\n\n"
       "generators:\n";
@@ -29,7 +34,8 @@ std::string make_scene_usage() {
       text += left + std::string(s.doc) + "; " + describe_range(s) + "\n";
     }
   }
-  text += "\nExit status: 0 success, 1 write failure, 2 bad generator, parameter or usage (nothing written).\n";
+  text += "\nExit status: 0 success, 1 runtime failure (a failed write, out of memory), 2 bad generator,\n"
+          "parameter, output file or usage (nothing written).\n";
   return text;
 }
 
@@ -43,6 +49,7 @@ int run_scene(std::span<const std::string> args) {
   std::string output;
   bool have_output = false;
   std::vector<std::string> assignments;  // NAME=VALUE, parsed once the generator is known
+  std::uint64_t bodies = 0;
   try {
     for (std::size_t i = 0; i < args.size(); ++i) {
       const std::string& a = args[i];
@@ -61,18 +68,27 @@ int run_scene(std::span<const std::string> args) {
     if (generator.empty()) throw std::invalid_argument("missing GENERATOR (see ccdlab scene --help)");
     const Generator& gen = generator_named(generator);
     if (!have_output) throw std::invalid_argument("missing -o SCENE.json");
-    ccd::Scene scene;
+    ccd::ParameterSet params;
     try {
       std::vector<ParameterValue> given;
       for (const std::string& a : assignments) given.push_back(parameter_value_from_text(a));
-      scene = generate_scene(gen, resolve_parameters(gen.parameters, given));
+      params = resolve_parameters(gen.parameters, given);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument(generator + ": " + e.what());
     }
-    ccd::save_scene(scene, output);
+    ccd::OutputFile out(output);
+    bodies = params.integer("bodies");
+    const ccd::Scene scene = generate_scene(gen, params);
+    out.commit(ccd::scene_to_json(scene).dump(1) + "\n");
   } catch (const std::invalid_argument& e) {
     std::cerr << "ccdlab scene: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const ccd::InputError& e) {
+    std::cerr << "ccdlab scene: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab scene: out of memory generating " << generator << " with bodies=" << bodies << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "ccdlab scene: " << e.what() << "\n";
     return 1;

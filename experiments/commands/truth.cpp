@@ -2,6 +2,7 @@
 // exact contact intervals of every pair (ground truth, format ccdlab-truth/2).
 #include "command.hpp"
 
+#include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <optional>
 
 namespace ccdlab {
@@ -25,13 +27,19 @@ constexpr const char* kUsage =
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md).\n"
     "\n"
-    "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout)\n"
-    "  --threads N   worker threads (default: one per core); the result does not depend on it\n"
-    "  --windows N   time windows of the space-time broad phase (default: automatic)\n"
+    "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"
+    "                before the work: a regular file, not the scene, in a folder that takes a file\n"
+    "  --threads N   worker threads, at most 4096 (default: one per core); the result does not\n"
+    "                depend on it\n"
+    "  --windows N   time windows of the space-time broad phase, at most 1000000 (default:\n"
+    "                automatic)\n"
     "  --quiet       print no summary\n"
     "\n"
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
     "2 bad input or usage (no file written).\n";
+
+// More windows than this cost more in box work and memory than they can save.
+constexpr unsigned long kMaxWindows = 1000000;
 
 int usage_error(const std::string& what) {
   std::cerr << "ccdlab truth: " << what << " (see ccdlab truth --help)\n";
@@ -52,6 +60,9 @@ int run_truth(std::span<const std::string> args) {
       } else {
         const auto n = ccd::parse_integer(v, 1, 999999999);
         if (!n) return usage_error(a + " needs a positive integer, got '" + v + "'");
+        if (a == "--threads" && *n > 4096) return usage_error("--threads must be at most 4096, got " + v);
+        if (a == "--windows" && *n > kMaxWindows)
+          return usage_error("--windows must be at most " + std::to_string(kMaxWindows) + ", got " + v);
         if (a == "--threads") options.threads = static_cast<unsigned>(*n);
         else options.windows = *n;
       }
@@ -66,21 +77,38 @@ int run_truth(std::span<const std::string> args) {
     }
   }
   if (scene_path.empty()) return usage_error("missing SCENE.json");
+  std::string doing = "reading " + scene_path;
   try {
+    std::optional<ccd::OutputFile> output;
+    const std::string inputs[] = {scene_path};
+    if (!out_path.empty()) output.emplace(out_path, inputs);
     const auto start = std::chrono::steady_clock::now();
     const ccd::Scene scene = ccd::load_scene(scene_path);
     const auto loaded = std::chrono::steady_clock::now();
-    const ccd::Trajectories traj(scene);
+    doing = "building the trajectories of " + std::to_string(scene.bodies.size()) + " bodies";
+    const ccd::Trajectories traj = [&] {
+      try {
+        return ccd::Trajectories(scene);
+      } catch (const ccd::TooManyPieces& e) {
+        throw ccd::InputError(scene_path, "bodies[" + std::to_string(e.body()) + "]",
+                              "needs more than " + std::to_string(e.limit()) +
+                                  " trajectory pieces over the horizon (wall reflections and acceleration changes; "
+                                  "a body bouncing ever faster or too fast for its box)");
+      }
+    }();
     const auto built = std::chrono::steady_clock::now();
+    doing = "computing the ground truth of " + std::to_string(scene.bodies.size()) + " bodies" +
+            (options.windows ? " in " + std::to_string(options.windows) + " windows" : std::string());
     const ccd::TruthResult result = ccd::compute_truth_detailed(traj, options);
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
-    if (!out_path.empty()) {
+    doing = "writing " + out_path;
+    if (output) {
       ccd::TruthFile file;
       file.horizon = scene.horizon;
       file.events = result.events;
       file.scene_sha256 = ccd::scene_digest(scene);
-      ccd::save_truth(file, out_path);
+      output->commit(ccd::truth_to_text(file));
     }
     if (quiet || out_path == "-") return 0;
     std::size_t tangent = 0;
@@ -101,6 +129,9 @@ int run_truth(std::span<const std::string> args) {
   } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab truth: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab truth: out of memory " << doing << "\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "ccdlab truth: " << e.what() << "\n";
     return 1;

@@ -129,10 +129,10 @@ TEST_CASE("ccdlab scene without -o writes nothing", "[generators][cli]") {
   }
 }
 
-TEST_CASE("ccdlab scene reports an unwritable output as a runtime failure", "[generators][cli]") {
+TEST_CASE("ccdlab scene refuses an unwritable output before generating, with exit 2", "[generators][cli]") {
   const fs::path file = scratch() / "no-such-folder" / "x.json";
   const Run r = run_scene("gas bodies=10 -o '" + file.string() + "'");
-  CHECK(r.status == 1);
+  CHECK(r.status == 2);
   CHECK(!fs::exists(file));
   CHECK(r.err.find("no-such-folder") != std::string::npos);
 }

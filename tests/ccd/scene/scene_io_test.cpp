@@ -98,10 +98,10 @@ TEST_CASE("NaN and infinity are rejected wherever they appear", "[scene]") {
   // JSON has no NaN literal; a scene built in memory can still carry one.
   ccd::Scene s = ccd::scene_from_json(valid_scene(), "s.json");
   s.bodies[1].velocity.x() = std::numeric_limits<double>::quiet_NaN();
-  CHECK_THROWS_WITH(ccd::validate_scene(s, "s.json"), "s.json: bodies[1].velocity: must be finite");
+  CHECK_THROWS_WITH(ccd::validate_scene(s, "s.json"), "s.json: bodies[1].velocity[0]: must be finite");
   s.bodies[1].velocity.x() = 0.0;
   s.gravity.z() = std::numeric_limits<double>::infinity();
-  CHECK_THROWS_WITH(ccd::validate_scene(s, "s.json"), "s.json: gravity: must be finite");
+  CHECK_THROWS_WITH(ccd::validate_scene(s, "s.json"), "s.json: gravity[2]: must be finite");
   // A number too large for a double is rejected by the reader with the file named.
   const std::string path = "scene_io_test_overflow.json";
   {
@@ -113,5 +113,28 @@ TEST_CASE("NaN and infinity are rejected wherever they appear", "[scene]") {
 
 TEST_CASE("malformed JSON names the file", "[scene]") {
   const std::string path = std::string(CCDLAB_SOURCE_DIR) + "/tests/ccd/scene/no-such-file.json";
-  CHECK_THROWS_WITH(ccd::load_scene(path), path + ": cannot open file");
+  CHECK_THROWS_WITH(ccd::load_scene(path), path + ": cannot open file: No such file or directory");
+}
+
+TEST_CASE("a body with no room between two walls must not move along that axis", "[scene]") {
+  // Found by fuzzing: a body whose centre lies on both wall planes (box width = diameter)
+  // was reflected from one wall into the other at t = 0 and left the box.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.box = ccd::WallBox{ccd::Vec3(0, 0, 0), ccd::Vec3(1, 4, 4)};
+  s.bodies.push_back({0.5, ccd::Vec3(0.5, 2, 2), ccd::Vec3(100, 0, 0), ccd::Vec3::Zero(), {}});
+  CHECK_THROWS_WITH(ccd::validate_scene(s, "s.json"),
+                    "s.json: bodies[0].velocity[0]: must be 0: the body fills the box on this axis (no room to "
+                    "move between the walls)");
+  s.bodies[0].velocity = ccd::Vec3(0, 3, -1);  // across the other axes it may move
+  CHECK_NOTHROW(ccd::validate_scene(s, "s.json"));
+  SECTION("room is judged on the exact wall planes, not their roundings") {
+    // min + r = 2^53 + 1.25 rounds to 2^53 + 2, and so does max - r = 2^53 + 2.75: the
+    // rounded planes coincide, the exact ones are 1.5 apart, so the body may move.
+    const double two53 = 0x1p53;
+    s.box = ccd::WallBox{ccd::Vec3(two53, 0, 0), ccd::Vec3(two53 + 4, 4, 4)};
+    s.bodies[0] = {1.25, ccd::Vec3(two53 + 2, 2, 2), ccd::Vec3(1, 0, 0), ccd::Vec3::Zero(), {}};
+    REQUIRE(s.box->min.x() + 1.25 == s.box->max.x() - 1.25);
+    CHECK_NOTHROW(ccd::validate_scene(s, "s.json"));
+  }
 }
