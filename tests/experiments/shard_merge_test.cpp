@@ -1,5 +1,6 @@
 // Sharding: for any shard count N and any order of the shard files, `merge_results`
 // gives back the whole run, count for count (docs/experiments.md, "Running on a cluster").
+#include "../../experiments/results_file.hpp"
 #include "../../experiments/run_experiment.hpp"
 
 #include <catch2/catch.hpp>
@@ -73,19 +74,14 @@ TEST_CASE("shards merged in any order equal the whole run, for any shard count",
       CAPTURE(permutation);
       if (permutation == 1) std::reverse(order.begin(), order.end());
       if (permutation == 2) std::shuffle(order.begin(), order.end(), rng);
-      std::vector<json> given;
-      std::vector<std::string> files;
-      for (const std::size_t i : order) {
-        given.push_back(shards[i]);
-        files.push_back(names[i]);
-      }
-      const json merged = ccdlab::merge_results(given, files);
+      std::vector<ccdlab::ResultsShard> given;
+      for (const std::size_t i : order) given.push_back({names[i], shards[i]});
+      const json merged = ccdlab::merge_results(given);
       CHECK(merged["shard"]["merged_from"] == n);
       CHECK(comparable(merged) == comparable(whole));
       if (n > 1 && n <= static_cast<int>(jobs)) {  // a missing shard is an error, whichever it is
         given.pop_back();
-        files.pop_back();
-        CHECK_THROWS(ccdlab::merge_results(given, files));
+        CHECK_THROWS(ccdlab::merge_results(given));
       }
     }
   }
