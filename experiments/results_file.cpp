@@ -39,7 +39,7 @@ void check_like(const json& schema, const json& v, const Reader& r, const std::s
 }
 
 // The experiment as stored in results: it must parse as an experiment, and be stored in
-// its canonical form (what experiment_to_json writes).
+// the form experiment_to_json writes.
 Experiment stored_experiment(const json& j, const Reader& r) {
   Experiment e;
   try {

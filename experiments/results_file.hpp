@@ -17,7 +17,7 @@ void validate_results(const nlohmann::json& results, const std::string& file);
 
 struct ResultsShard {
   std::string file;         ///< for error messages
-  nlohmann::json results;   ///< a parsed ccdlab-results/1 document
+  nlohmann::json results;   ///< a parsed ccdlab-results/2 document
 };
 
 /// Validates every shard, checks that they are of the same experiment, the same scene
