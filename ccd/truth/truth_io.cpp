@@ -42,8 +42,12 @@ json truth_to_json(const TruthFile& t) {
 }
 
 std::string truth_to_text(const TruthFile& t) {
-  std::string s = "{\"format\": \"" + std::string(kTruthFormat) + "\", \"horizon\": " + json(t.horizon).dump() +
-                  ", \"scene_sha256\": " + json(t.scene_sha256).dump() + ",\n \"events\": [";
+  // Without a scene digest (a truth read from a version 1 file) the file is version 1:
+  // version 2 requires the digest, so writing it empty would give an unreadable file.
+  const bool digest = !t.scene_sha256.empty();
+  std::string s = "{\"format\": \"" + std::string(digest ? kTruthFormat : kTruthFormatV1) +
+                  "\", \"horizon\": " + json(t.horizon).dump() +
+                  (digest ? ", \"scene_sha256\": " + json(t.scene_sha256).dump() : std::string()) + ",\n \"events\": [";
   for (std::size_t i = 0; i < t.events.size(); ++i) {
     s += i == 0 ? "\n  " : ",\n  ";
     s += event_json(t, i).dump();

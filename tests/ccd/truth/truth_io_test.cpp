@@ -73,6 +73,19 @@ TEST_CASE("version 1 truth files stay readable", "[truth][io]") {
   CHECK(t.errors.empty());
 }
 
+TEST_CASE("a truth without a scene digest is written as version 1 and reads back", "[truth][io]") {
+  // Found by fuzz_truth: a version 1 file read and written again came out as version 2
+  // with "scene_sha256": "", which the reader (rightly) refuses.
+  TruthFile t = sample();
+  t.scene_sha256.clear();
+  const std::string text = ccd::truth_to_text(t);
+  CHECK(text.find("ccdlab-truth/1") != std::string::npos);
+  CHECK(text.find("scene_sha256") == std::string::npos);
+  const TruthFile again = ccd::truth_from_json(json::parse(text), "t.json");
+  CHECK(again.version == 1);
+  CHECK(again.events == t.events);
+}
+
 TEST_CASE("bad truth files name the file and the field", "[truth][io]") {
   json j = ccd::truth_to_json(sample());
   SECTION("wrong format") {
