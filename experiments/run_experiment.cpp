@@ -25,7 +25,12 @@ namespace ccdlab {
 using nlohmann::json;
 
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
-  if (!e.scene_path.empty()) return ccd::load_scene(e.scene_path);
+  if (!e.scene_path.empty()) {
+    ccd::Scene scene = ccd::load_scene(e.scene_path);
+    if (scene.has_non_spheres())
+      throw ccd::InputError(e.scene_path, "shapes", "shapes other than spheres need the rigid ground truth (not available)");
+    return scene;
+  }
   json params = e.scene_generator;
   const std::string name = params["generator"].get<std::string>();
   params.erase("generator");

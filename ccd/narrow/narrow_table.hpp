@@ -3,15 +3,16 @@
 // s_registers[type][type] with b2AddType; Jolt's CollisionDispatch). An entry answers one
 // pair (a, b) for one step (ccd/narrow/narrow_query.hpp) with a ContactResult. Adding
 // (A, B) registers (B, A) too, with the pair's roles swapped on the call, so an entry
-// only handles its own order. The default table binds sphere x sphere to the exact
-// solver (ccd/narrow/sphere_sphere_narrow.hpp).
+// only handles its own order. The default table binds every pair of kinds to
+// conservative advancement (ccd/narrow/conservative_advancement.hpp) and overrides
+// sphere x sphere with the exact solver (ccd/narrow/sphere_sphere_narrow.hpp).
 //
 // Dispatch is decided once per step: a caller looks the entry up for the kinds present
 // (find) and calls it per pair. A missing entry is a programming error (find throws
 // std::logic_error naming the two kinds).
 #include <ccd/narrow/contact_result.hpp>
 #include <ccd/narrow/narrow_query.hpp>
-#include <ccd/narrow/shape_kind.hpp>
+#include <ccd/shape/shape_kind.hpp>
 
 #include <array>
 #include <cstdint>
@@ -44,7 +45,8 @@ class NarrowTable {
   std::array<NarrowEntry, kShapeKinds * kShapeKinds> entries_{};
 };
 
-/// The default table: sphere x sphere -> sphere_sphere_narrow.
+/// The default table: sphere x sphere -> sphere_sphere_narrow; every other pair ->
+/// conservative_advancement.
 const NarrowTable& narrow_table();
 
 }  // namespace ccd

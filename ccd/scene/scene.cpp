@@ -28,6 +28,26 @@ double Scene::max_acceleration() const {
   return m;
 }
 
+bool Scene::is_rigid() const {
+  if (!shapes.empty()) return true;
+  for (const RigidBody& r : rigid)
+    if (r.shape != kNoShape || r.spins()) return true;
+  return false;
+}
+
+bool Scene::has_non_spheres() const {
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    if (kind(i) != ShapeKind::Sphere) return true;
+  return false;
+}
+
+void Scene::add_rigid_body(Body body, RigidBody r) {
+  if (r.shape != kNoShape) body.radius = shapes[static_cast<std::size_t>(r.shape)].enclosing_radius();
+  rigid.resize(bodies.size());
+  bodies.push_back(std::move(body));
+  rigid.push_back(std::move(r));
+}
+
 const char* to_string(MotionKind kind) {
   switch (kind) {
     case MotionKind::Linear: return "linear";

@@ -5,6 +5,7 @@
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -16,6 +17,58 @@ using nlohmann::json;
 using Reader = JsonReader;
 
 std::string body_path(std::size_t i) { return "bodies[" + std::to_string(i) + "]"; }
+std::string shape_path(std::size_t i) { return "shapes[" + std::to_string(i) + "]"; }
+
+// Largest accepted | |q| - 1 | of an orientation as read; it is then normalised.
+constexpr double kQuaternionTolerance = 1e-6;
+
+Shape shape_from_json(const Reader& r, const json& o, const std::string& p) {
+  if (!o.is_object()) r.fail(p, "must be an object with name and kind");
+  Shape s;
+  s.name = r.string(r.require(o, "name", p), p + ".name");
+  if (s.name.empty()) r.fail(p + ".name", "must not be empty");
+  const std::string kind = r.string(r.require(o, "kind", p), p + ".kind");
+  const auto k = shape_kind_from_string(kind);
+  if (!k) r.fail(p + ".kind", "unknown shape kind \"" + kind + "\" (sphere, capsule, box, hull)");
+  s.kind = *k;
+  switch (s.kind) {
+    case ShapeKind::Sphere: s.radius = r.number(r.require(o, "radius", p), p + ".radius"); break;
+    case ShapeKind::Capsule:
+      s.half_length = r.number(r.require(o, "half_length", p), p + ".half_length");
+      s.radius = r.number(r.require(o, "radius", p), p + ".radius");
+      break;
+    case ShapeKind::Box: s.half_extents = r.vec3(r.require(o, "half_extents", p), p + ".half_extents"); break;
+    case ShapeKind::Hull: {
+      const json& pts = r.require(o, "points", p);
+      if (!pts.is_array()) r.fail(p + ".points", "must be an array of [x, y, z] points");
+      for (std::size_t i = 0; i < pts.size(); ++i)
+        s.points.push_back(r.vec3(pts[i], p + ".points[" + std::to_string(i) + "]"));
+      break;
+    }
+  }
+  s.build_points();
+  return s;
+}
+
+json shape_to_json(const Shape& s) {
+  auto v = [](const Vec3& x) { return json::array({x.x(), x.y(), x.z()}); };
+  json j = {{"name", s.name}, {"kind", std::string(to_string(s.kind))}};
+  switch (s.kind) {
+    case ShapeKind::Sphere: j["radius"] = s.radius; break;
+    case ShapeKind::Capsule:
+      j["half_length"] = s.half_length;
+      j["radius"] = s.radius;
+      break;
+    case ShapeKind::Box: j["half_extents"] = v(s.half_extents); break;
+    case ShapeKind::Hull: {
+      json pts = json::array();
+      for (const Vec3& q : s.points) pts.push_back(v(q));
+      j["points"] = std::move(pts);
+      break;
+    }
+  }
+  return j;
+}
 
 }  // namespace
 
@@ -23,8 +76,10 @@ Scene scene_from_json(const json& j, const std::string& file) {
   Reader r{file};
   if (!j.is_object()) r.fail("", "a scene must be a JSON object");
   const json& format = r.require(j, "format", "");
-  if (!format.is_string() || format.get<std::string>() != "ccdlab-scene/1")
-    r.fail("format", "must be \"ccdlab-scene/1\"");
+  if (!format.is_string() ||
+      (format.get<std::string>() != kSceneFormatV1 && format.get<std::string>() != kSceneFormat))
+    r.fail("format", "must be \"ccdlab-scene/1\" or \"ccdlab-scene/2\"");
+  const bool v2 = format.get<std::string>() == kSceneFormat;
   Scene s;
   s.horizon = r.number(r.require(j, "horizon", ""), "horizon");
   s.gravity = r.optional_vec3(j, "gravity", "");
@@ -35,15 +90,37 @@ Scene scene_from_json(const json& j, const std::string& file) {
     box.max = r.vec3(r.require(*it, "max", "box"), "box.max");
     s.box = box;
   }
+  if (auto it = j.find("shapes"); it != j.end()) {
+    if (!v2) r.fail("shapes", "needs format \"ccdlab-scene/2\"");
+    if (!it->is_array()) r.fail("shapes", "must be an array");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      Shape sh = shape_from_json(r, (*it)[i], shape_path(i));
+      for (std::size_t k = 0; k < s.shapes.size(); ++k)
+        if (s.shapes[k].name == sh.name)
+          r.fail(shape_path(i) + ".name", "\"" + sh.name + "\" is already the name of " + shape_path(k));
+      s.shapes.push_back(std::move(sh));
+    }
+  }
   const json& bodies = r.require(j, "bodies", "");
   if (!bodies.is_array()) r.fail("bodies", "must be an array");
   s.bodies.reserve(bodies.size());
+  if (v2) s.rigid.reserve(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     const json& b = bodies[i];
     const std::string p = body_path(i);
     if (!b.is_object()) r.fail(p, "must be an object");
     Body body;
-    body.radius = r.number(r.require(b, "radius", p), p + ".radius");
+    RigidBody rigid;
+    if (auto it = b.find("shape"); it != b.end()) {
+      if (!v2) r.fail(p + ".shape", "needs format \"ccdlab-scene/2\"");
+      const std::string name = r.string(*it, p + ".shape");
+      const auto found = std::find_if(s.shapes.begin(), s.shapes.end(), [&](const Shape& x) { return x.name == name; });
+      if (found == s.shapes.end()) r.fail(p + ".shape", "unknown shape \"" + name + "\" (not in shapes)");
+      if (b.contains("radius")) r.fail(p + ".radius", "not allowed with shape (the shape gives the size)");
+      rigid.shape = static_cast<std::int32_t>(found - s.shapes.begin());
+    } else {
+      body.radius = r.number(r.require(b, "radius", p), p + ".radius");
+    }
     body.position = r.vec3(r.require(b, "position", p), p + ".position");
     body.velocity = r.optional_vec3(b, "velocity", p);
     body.acceleration = r.optional_vec3(b, "acceleration", p);
@@ -60,8 +137,41 @@ Scene scene_from_json(const json& j, const std::string& file) {
         body.acceleration_changes.push_back(ch);
       }
     }
+    for (const char* key : {"orientation", "angular_velocity", "angular_velocity_changes"})
+      if (!v2 && b.contains(key)) r.fail(p + "." + key, "needs format \"ccdlab-scene/2\"");
+    if (auto it = b.find("orientation"); it != b.end()) {
+      const std::string op = p + ".orientation";
+      if (!it->is_array() || it->size() != 4) r.fail(op, "must be a quaternion [w, x, y, z]");
+      double q[4];
+      for (std::size_t k = 0; k < 4; ++k) q[k] = r.number((*it)[k], op + "[" + std::to_string(k) + "]");
+      Eigen::Quaterniond quat(q[0], q[1], q[2], q[3]);
+      const double n = quat.norm();
+      if (!(std::fabs(n - 1.0) <= kQuaternionTolerance))
+        r.fail(op, "must be a unit quaternion (|q| is " + std::to_string(n) + ")");
+      quat.normalize();
+      rigid.orientation = quat;
+    }
+    rigid.angular_velocity = r.optional_vec3(b, "angular_velocity", p);
+    if (auto it = b.find("angular_velocity_changes"); it != b.end()) {
+      const std::string cp = p + ".angular_velocity_changes";
+      if (!it->is_array()) r.fail(cp, "must be an array");
+      for (std::size_t k = 0; k < it->size(); ++k) {
+        const json& c = (*it)[k];
+        const std::string kp = cp + "[" + std::to_string(k) + "]";
+        if (!c.is_object()) r.fail(kp, "must be an object with t and angular_velocity");
+        AngularVelocityChange ch;
+        ch.t = r.number(r.require(c, "t", kp), kp + ".t");
+        ch.angular_velocity = r.vec3(r.require(c, "angular_velocity", kp), kp + ".angular_velocity");
+        rigid.angular_velocity_changes.push_back(ch);
+      }
+    }
+    if (rigid.shape != kNoShape) body.radius = s.shapes[static_cast<std::size_t>(rigid.shape)].enclosing_radius();
     s.bodies.push_back(std::move(body));
+    if (v2) s.rigid.push_back(std::move(rigid));
   }
+  // A version-2 file of plain spheres without spin is a sphere scene: no side table.
+  if (std::none_of(s.rigid.begin(), s.rigid.end(), [](const RigidBody& x) { return x.shape != kNoShape || x.spins(); }))
+    s.rigid.clear();
   validate_scene(s, file);
   return s;
 }
@@ -87,6 +197,29 @@ void validate_scene(const Scene& s, const std::string& file) {
       if (!(s.box->min[a] < s.box->max[a]))
         r.fail("box", "min must be < max on every axis (axis " + std::to_string(a) + ")");
   }
+  for (std::size_t i = 0; i < s.shapes.size(); ++i) {
+    const Shape& sh = s.shapes[i];
+    const std::string p = shape_path(i);
+    auto positive = [&](double x, const std::string& f) {
+      magnitude(x, f);
+      if (!(x > 0.0)) r.fail(f, "must be > 0");
+    };
+    switch (sh.kind) {
+      case ShapeKind::Sphere: positive(sh.radius, p + ".radius"); break;
+      case ShapeKind::Capsule:
+        positive(sh.half_length, p + ".half_length");
+        positive(sh.radius, p + ".radius");
+        break;
+      case ShapeKind::Box:
+        for (int k = 0; k < 3; ++k) positive(sh.half_extents[k], p + ".half_extents[" + std::to_string(k) + "]");
+        break;
+      case ShapeKind::Hull: {
+        for (std::size_t k = 0; k < sh.points.size(); ++k) finite3(sh.points[k], p + ".points[" + std::to_string(k) + "]");
+        if (const std::string why = hull_degeneracy(sh.points); !why.empty()) r.fail(p + ".points", why);
+        break;
+      }
+    }
+  }
   const double T = s.horizon;
   // How far a body can travel over the horizon: |v| T and |a + gravity| T^2 / 2 (every
   // acceleration it takes), each within the limit, so that every position, distance and
@@ -98,11 +231,24 @@ void validate_scene(const Scene& s, const std::string& file) {
       r.fail(f, std::string(what) + " is " + text + " m, above the limit " + limit + " m");
     }
   };
+  if (!s.rigid.empty() && s.rigid.size() != s.bodies.size())
+    r.fail("bodies", "the shape and spin table has " + std::to_string(s.rigid.size()) + " entries for " +
+                         std::to_string(s.bodies.size()) + " bodies");
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
     const std::string p = body_path(i);
+    const RigidBody rb = s.rigid_body(i);
+    if (rb.shape != kNoShape) {
+      if (rb.shape < 0 || static_cast<std::size_t>(rb.shape) >= s.shapes.size())
+        r.fail(p + ".shape", "no such shape (index " + std::to_string(rb.shape) + ")");
+      if (b.radius != s.shapes[static_cast<std::size_t>(rb.shape)].enclosing_radius())
+        r.fail(p + ".radius", "must be the shape's enclosing radius");
+    }
     magnitude(b.radius, p + ".radius");
     if (b.radius <= 0.0) r.fail(p + ".radius", "must be > 0");
+    for (int k = 0; k < 4; ++k) magnitude(rb.orientation.coeffs()[k], p + ".orientation");
+    if (!(std::fabs(rb.orientation.squaredNorm() - 1.0) <= 1e-12)) r.fail(p + ".orientation", "must be a unit quaternion");
+    finite3(rb.angular_velocity, p + ".angular_velocity");
     finite3(b.position, p + ".position");
     finite3(b.velocity, p + ".velocity");
     finite3(b.acceleration, p + ".acceleration");
@@ -133,6 +279,15 @@ void validate_scene(const Scene& s, const std::string& file) {
             "|acceleration + gravity| * horizon^2 / 2");
       prev = c.t;
     }
+    prev = 0.0;
+    for (std::size_t k = 0; k < rb.angular_velocity_changes.size(); ++k) {
+      const AngularVelocityChange& c = rb.angular_velocity_changes[k];
+      const std::string kp = p + ".angular_velocity_changes[" + std::to_string(k) + "]";
+      if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
+        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
+      finite3(c.angular_velocity, kp + ".angular_velocity");
+      prev = c.t;
+    }
   }
 }
 
@@ -141,19 +296,41 @@ Scene load_scene(const std::string& path) { return scene_from_json(read_json_fil
 json scene_to_json(const Scene& s) {
   auto v = [](const Vec3& x) { return json::array({x.x(), x.y(), x.z()}); };
   json j;
-  j["format"] = "ccdlab-scene/1";
+  const bool v2 = s.is_rigid();
+  j["format"] = v2 ? kSceneFormat : kSceneFormatV1;
   j["horizon"] = s.horizon;
   j["gravity"] = v(s.gravity);
   if (s.box) j["box"] = {{"min", v(s.box->min)}, {"max", v(s.box->max)}};
+  if (v2) {
+    json shapes = json::array();
+    for (const Shape& sh : s.shapes) shapes.push_back(shape_to_json(sh));
+    j["shapes"] = std::move(shapes);
+  }
   json bodies = json::array();
-  for (const Body& b : s.bodies) {
-    json jb = {{"radius", b.radius}, {"position", v(b.position)}, {"velocity", v(b.velocity)},
-               {"acceleration", v(b.acceleration)}};
+  for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+    const Body& b = s.bodies[i];
+    const RigidBody rb = s.rigid_body(i);
+    json jb = {{"position", v(b.position)}, {"velocity", v(b.velocity)}, {"acceleration", v(b.acceleration)}};
+    if (rb.shape == kNoShape)
+      jb["radius"] = b.radius;
+    else
+      jb["shape"] = s.shapes[static_cast<std::size_t>(rb.shape)].name;
     if (!b.acceleration_changes.empty()) {
       json ch = json::array();
       for (const AccelerationChange& c : b.acceleration_changes)
         ch.push_back({{"t", c.t}, {"acceleration", v(c.acceleration)}});
       jb["acceleration_changes"] = ch;
+    }
+    if (v2) {
+      const Eigen::Quaterniond& q = rb.orientation;
+      jb["orientation"] = json::array({q.w(), q.x(), q.y(), q.z()});
+      jb["angular_velocity"] = v(rb.angular_velocity);
+      if (!rb.angular_velocity_changes.empty()) {
+        json ch = json::array();
+        for (const AngularVelocityChange& c : rb.angular_velocity_changes)
+          ch.push_back({{"t", c.t}, {"angular_velocity", v(c.angular_velocity)}});
+        jb["angular_velocity_changes"] = ch;
+      }
     }
     bodies.push_back(std::move(jb));
   }

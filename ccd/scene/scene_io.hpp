@@ -1,12 +1,20 @@
 #pragma once
-// Reading and writing `ccdlab-scene/1` files (format in docs/formats.md).
+// Reading and writing `ccdlab-scene/1` and `ccdlab-scene/2` files (format in
+// docs/formats.md). Version 2 adds `shapes` and, per body, `shape`, `orientation`,
+// `angular_velocity` and `angular_velocity_changes` (docs/rigid_bodies.md); those fields
+// in a version 1 file are an error. A scene is written as version 1 when it has no shapes
+// and no spin (Scene::is_rigid false), so sphere scenes and their digests stay as they were.
 //
 // Validation: malformed JSON (ccd/io/json_reader.hpp: duplicate keys included), a missing
 // or mistyped required field, NaN or infinity, a magnitude above kMaxSceneMagnitude,
 // radius <= 0, horizon <= 0, a box with min >= max on some axis, a body outside the box
 // (centre closer than its radius to a wall), a body that could travel further than
 // kMaxSceneMagnitude over the horizon (|v| T or |a + gravity| T^2 / 2), acceleration
-// changes out of order or outside (0, horizon): each throws InputError naming the file,
+// changes out of order or outside (0, horizon); version 2: an unknown shape kind or name,
+// a duplicate shape name, a size <= 0, a hull with fewer than 4 points or no volume
+// (coincident, collinear or coplanar points: ccd::hull_degeneracy), a body with both
+// shape and radius, an orientation whose norm is further than 1e-6 from 1 (it is
+// normalised otherwise), angular velocity changes out of order: each throws InputError naming the file,
 // the field path and the body index (`bodies[3].radius`). Unknown fields are ignored.
 #include <ccd/io/json_reader.hpp>  // read_json_file
 #include <ccd/scene/scene.hpp>
@@ -20,6 +28,9 @@ namespace ccd {
 /// distance a body can travel over the horizon. Lengths below 1e30 keep their squares
 /// (1e60) and fourth powers (1e120), which the exact solvers form, far from overflow.
 inline constexpr double kMaxSceneMagnitude = 1e30;
+
+inline constexpr const char* kSceneFormat = "ccdlab-scene/2";
+inline constexpr const char* kSceneFormatV1 = "ccdlab-scene/1";
 
 /// Parses a scene from JSON; `file` is used only in error messages.
 Scene scene_from_json(const nlohmann::json& j, const std::string& file);

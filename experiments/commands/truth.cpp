@@ -84,6 +84,8 @@ int run_truth(std::span<const std::string> args) {
     if (!out_path.empty()) output.emplace(out_path, inputs);
     const auto start = std::chrono::steady_clock::now();
     const ccd::Scene scene = ccd::load_scene(scene_path);
+    if (scene.has_non_spheres())
+      throw ccd::InputError(scene_path, "shapes", "shapes other than spheres need the rigid ground truth (not available)");
     const auto loaded = std::chrono::steady_clock::now();
     doing = "building the trajectories of " + std::to_string(scene.bodies.size()) + " bodies";
     const ccd::Trajectories traj = [&] {

@@ -141,3 +141,22 @@ TEST_CASE("ccdlab truth usage errors exit with status 2", "[experiments][truth]"
   CHECK(run(tmp, "x.json --bogus").status == 2);
   CHECK(run(tmp, "x.json -o").status == 2);
 }
+
+TEST_CASE("ccdlab truth: a bad ccdlab-scene/2 exits 2 with one line naming file, field and index", "[cli][truth][rigid]") {
+  TempDir tmp;
+  json s = json::parse(R"({"format": "ccdlab-scene/2", "horizon": 1.0,
+    "shapes": [{"name": "crate", "kind": "box", "half_extents": [0.5, 0.25, -0.125]}],
+    "bodies": [{"shape": "crate", "position": [0, 0, 0]}, {"radius": 1, "position": [5, 0, 0]}]})");
+  const std::string path = (tmp / "bad.json").string();
+  std::ofstream(path) << s.dump();
+  const Run r = run(tmp, path + " -o " + (tmp / "t.json").string());
+  CHECK(r.status == 2);
+  CHECK(r.err == "ccdlab truth: " + path + ": shapes[0].half_extents[2]: must be > 0\n");
+  CHECK_FALSE(fs::exists(tmp / "t.json"));
+  s["shapes"][0]["kind"] = "hull";
+  s["shapes"][0]["points"] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+  std::ofstream(path) << s.dump();
+  const Run h = run(tmp, path);
+  CHECK(h.status == 2);
+  CHECK(h.err == "ccdlab truth: " + path + ": shapes[0].points: all points are coplanar (the hull has no volume)\n");
+}

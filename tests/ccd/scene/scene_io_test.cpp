@@ -68,7 +68,7 @@ TEST_CASE("bad scenes name the file, the field and the body index", "[scene]") {
     CHECK(error_of(j) == "s.json: horizon: missing required field");
   }
   SECTION("wrong format") {
-    j["format"] = "ccdlab-scene/2";
+    j["format"] = "ccdlab-scene/3";
     CHECK(error_of(j).find("format") != std::string::npos);
   }
   SECTION("a string where a number belongs") {

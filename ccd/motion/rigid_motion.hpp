@@ -1,0 +1,53 @@
+#pragma once
+// What the generic narrow phase and the rigid ground truth may ask about a body: its
+// shape (kind and ConvexProxy), its pose at a time (centre from the exact trajectories,
+// orientation from the prescribed rotations), and a bound on the speed of its points.
+// Built once per scene; for a sphere-only scene it holds no rotations (every body is a
+// ball about its centre).
+#include <ccd/motion/rotation.hpp>
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/scene/scene.hpp>
+#include <ccd/shape/convex_proxy.hpp>
+#include <ccd/shape/shape_kind.hpp>
+
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace ccd {
+
+using Mat3 = Eigen::Matrix3d;
+
+struct Pose {
+  Vec3 centre{Vec3::Zero()};
+  Mat3 rotation{Mat3::Identity()};  ///< body frame to world frame
+  Vec3 apply(const Vec3& body_point) const { return centre + rotation * body_point; }
+};
+
+class RigidMotion {
+ public:
+  /// `centres` must outlive this object and be the trajectories of `scene`.
+  RigidMotion(const Scene& scene, const Trajectories& centres);
+
+  std::size_t size() const { return kinds_.size(); }
+  const Trajectories& centres() const { return *centres_; }
+  const Rotations& rotations() const { return rotations_; }
+  ShapeKind kind(std::size_t body) const { return kinds_[body]; }
+  ConvexProxy proxy(std::size_t body) const;
+  /// Radius of the ball about the centre that holds the body in every orientation.
+  double enclosing_radius(std::size_t body) const { return centres_->radius(body); }
+  Pose pose(std::size_t body, double t) const;
+  /// Upper bound on the speed of every point of `body` over [u0, u1] (m/s):
+  /// max |centre velocity| (at the ends of each trajectory piece inside, where |v + a s|
+  /// is largest) + max |omega| x enclosing radius, rounded up.
+  double max_point_speed(std::size_t body, double u0, double u1) const;
+
+ private:
+  const Trajectories* centres_;
+  Rotations rotations_;
+  std::vector<ShapeKind> kinds_;
+  std::vector<std::vector<Vec3>> points_;  ///< per shape of the scene, then one origin
+  std::vector<std::uint32_t> point_set_;   ///< per body: index into points_
+  std::vector<double> proxy_radius_;       ///< per body
+};
+
+}  // namespace ccd

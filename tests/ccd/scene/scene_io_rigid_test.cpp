@@ -1,0 +1,164 @@
+// ccdlab-scene/2: shapes, orientation and prescribed spin.
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
+#include <ccd/scene/scene_io.hpp>
+
+#include <catch2/catch.hpp>
+
+using ccd::InputError;
+using ccd::Vec3;
+using nlohmann::json;
+
+namespace {
+
+json rigid_scene() {
+  return json::parse(R"({"format": "ccdlab-scene/2", "horizon": 2.0,
+    "box": {"min": [0, 0, 0], "max": [20, 20, 20]}, "gravity": [0, -9.81, 0],
+    "shapes": [{"name": "stick", "kind": "capsule", "half_length": 1.0, "radius": 0.05},
+               {"name": "crate", "kind": "box", "half_extents": [0.5, 0.3, 0.2]},
+               {"name": "rock",  "kind": "hull", "points": [[0.3, 0, 0], [0, 0.4, 0], [0, 0, 0.2], [-0.2, -0.1, -0.1]]},
+               {"name": "ball",  "kind": "sphere", "radius": 0.25}],
+    "bodies": [{"shape": "crate", "position": [5, 5, 5], "velocity": [1, 0, 0],
+                "orientation": [1, 0, 0, 0], "angular_velocity": [0, 0, 6.3],
+                "angular_velocity_changes": [{"t": 1.0, "angular_velocity": [2, 0, 0]}]},
+               {"radius": 0.5, "position": [8, 5, 5]},
+               {"shape": "stick", "position": [12, 5, 5], "orientation": [0, 0, 0, 1]},
+               {"shape": "rock", "position": [15, 5, 5]},
+               {"shape": "ball", "position": [15, 15, 5]}]})");
+}
+
+std::string error_of(const json& j) {
+  try {
+    ccd::scene_from_json(j, "s.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST_CASE("a ccdlab-scene/2 file parses: shapes, enclosing radii, normalised orientation", "[scene][rigid]") {
+  json j = rigid_scene();
+  j["bodies"][2]["orientation"] = {0, 0, 0, 1.0000001};  // |q| 1e-7 from 1: normalised
+  const ccd::Scene s = ccd::scene_from_json(j, "s.json");
+  REQUIRE(s.shapes.size() == 4);
+  REQUIRE(s.bodies.size() == 5);
+  CHECK(s.kind(0) == ccd::ShapeKind::Box);
+  CHECK(s.kind(1) == ccd::ShapeKind::Sphere);
+  CHECK(s.kind(2) == ccd::ShapeKind::Capsule);
+  CHECK(s.kind(3) == ccd::ShapeKind::Hull);
+  CHECK(s.kind(4) == ccd::ShapeKind::Sphere);
+  CHECK(s.bodies[0].radius == s.shapes[1].enclosing_radius());
+  CHECK(s.bodies[1].radius == 0.5);
+  CHECK(s.bodies[2].radius == s.shapes[0].enclosing_radius());
+  CHECK(s.bodies[4].radius == 0.25);
+  CHECK(s.rigid[2].orientation.norm() == Approx(1.0).epsilon(1e-15));
+  CHECK(s.rigid[2].orientation.z() == Approx(1.0).epsilon(1e-15));
+  REQUIRE(s.rigid[0].angular_velocity_changes.size() == 1);
+  CHECK(s.rigid[0].angular_velocity_changes[0].angular_velocity == Vec3(2, 0, 0));
+  CHECK(s.is_rigid());
+  CHECK(s.has_non_spheres());
+}
+
+TEST_CASE("a rigid scene round-trips as ccdlab-scene/2; a sphere scene stays ccdlab-scene/1", "[scene][rigid]") {
+  json j = rigid_scene();
+  j["bodies"][2]["orientation"] = {0.5, 0.5, 0.5, 0.5};
+  const ccd::Scene a = ccd::scene_from_json(j, "s.json");
+  const json out = ccd::scene_to_json(a);
+  CHECK(out["format"] == "ccdlab-scene/2");
+  const ccd::Scene b = ccd::scene_from_json(out, "s.json");
+  CHECK(ccd::scene_to_json(b) == out);
+  CHECK(ccd::scene_digest(a) == ccd::scene_digest(b));
+  REQUIRE(b.shapes.size() == a.shapes.size());
+  CHECK(b.shapes[2].points == a.shapes[2].points);
+  CHECK(b.rigid[2].orientation.coeffs() == a.rigid[2].orientation.coeffs());
+
+  // Spheres only, no spin: written as version 1, with no version-2 field.
+  const ccd::Scene spheres = ccd::scene_from_json(
+      json::parse(R"({"format": "ccdlab-scene/1", "horizon": 1, "bodies": [{"radius": 0.5, "position": [0, 0, 0]}]})"), "s.json");
+  const json v1 = ccd::scene_to_json(spheres);
+  CHECK(v1["format"] == "ccdlab-scene/1");
+  CHECK_FALSE(v1.contains("shapes"));
+  CHECK_FALSE(v1["bodies"][0].contains("orientation"));
+  // A version-2 file of spheres without spin is the same scene, so the same digest.
+  json as_v2 = v1;
+  as_v2["format"] = "ccdlab-scene/2";
+  CHECK(ccd::scene_digest(ccd::scene_from_json(as_v2, "s.json")) == ccd::scene_digest(spheres));
+  CHECK(ccd::scene_from_json(as_v2, "s.json").rigid.empty());
+}
+
+TEST_CASE("bad rigid scenes name the file, the field and the index", "[scene][rigid]") {
+  json j = rigid_scene();
+  std::string expected;
+  SECTION("unknown kind") {
+    j["shapes"][1]["kind"] = "cylinder";
+    expected = "s.json: shapes[1].kind: unknown shape kind \"cylinder\" (sphere, capsule, box, hull)";
+  }
+  SECTION("unknown shape name") {
+    j["bodies"][3]["shape"] = "boulder";
+    expected = "s.json: bodies[3].shape: unknown shape \"boulder\" (not in shapes)";
+  }
+  SECTION("duplicate shape name") {
+    j["shapes"][2]["name"] = "stick";
+    expected = "s.json: shapes[2].name: \"stick\" is already the name of shapes[0]";
+  }
+  SECTION("negative half extent") {
+    j["shapes"][1]["half_extents"][2] = -0.2;
+    expected = "s.json: shapes[1].half_extents[2]: must be > 0";
+  }
+  SECTION("zero capsule radius") {
+    j["shapes"][0]["radius"] = 0.0;
+    expected = "s.json: shapes[0].radius: must be > 0";
+  }
+  SECTION("negative half length") {
+    j["shapes"][0]["half_length"] = -1.0;
+    expected = "s.json: shapes[0].half_length: must be > 0";
+  }
+  SECTION("coplanar hull") {
+    j["shapes"][2]["points"] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+    expected = "s.json: shapes[2].points: all points are coplanar (the hull has no volume)";
+  }
+  SECTION("degenerate hull: three points") {
+    j["shapes"][2]["points"] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    expected = "s.json: shapes[2].points: a hull needs at least 4 points (it has 3)";
+  }
+  SECTION("hull point not a 3-vector") {
+    j["shapes"][2]["points"][1] = {1, 2};
+    expected = "s.json: shapes[2].points[1]: must be an array of 3 numbers";
+  }
+  SECTION("shape and radius both") {
+    j["bodies"][0]["radius"] = 0.5;
+    expected = "s.json: bodies[0].radius: not allowed with shape (the shape gives the size)";
+  }
+  SECTION("orientation far from unit") {
+    j["bodies"][0]["orientation"] = {1, 0, 0, 0.01};
+    expected = "s.json: bodies[0].orientation: must be a unit quaternion (|q| is 1.000050)";
+  }
+  SECTION("orientation of three numbers") {
+    j["bodies"][0]["orientation"] = {1, 0, 0};
+    expected = "s.json: bodies[0].orientation: must be a quaternion [w, x, y, z]";
+  }
+  SECTION("angular velocity change at the horizon") {
+    j["bodies"][0]["angular_velocity_changes"][0]["t"] = 2.0;
+    expected = "s.json: bodies[0].angular_velocity_changes[0].t: must increase strictly and lie in (0, horizon)";
+  }
+  SECTION("a shaped body that does not fit the box: the enclosing sphere must") {
+    j["bodies"][2]["position"] = {0.5, 5, 5};  // stick R = 1.05 > 0.5
+    expected = "s.json: bodies[2].position: body must start inside the box (centre at least radius from every wall)";
+  }
+  SECTION("version-2 fields in a version-1 file") {
+    j["format"] = "ccdlab-scene/1";
+    expected = "s.json: shapes: needs format \"ccdlab-scene/2\"";
+  }
+  SECTION("spin in a version-1 file") {
+    j = json::parse(R"({"format": "ccdlab-scene/1", "horizon": 1,
+                        "bodies": [{"radius": 0.5, "position": [0, 0, 0], "angular_velocity": [1, 0, 0]}]})");
+    expected = "s.json: bodies[0].angular_velocity: needs format \"ccdlab-scene/2\"";
+  }
+  SECTION("unknown format") {
+    j["format"] = "ccdlab-scene/3";
+    expected = "s.json: format: must be \"ccdlab-scene/1\" or \"ccdlab-scene/2\"";
+  }
+  CHECK(error_of(j) == expected);
+}
