@@ -9,6 +9,8 @@
 
 namespace ccd {
 
+class RigidMotion;
+
 struct NarrowInput {
   const Trajectories* motion = nullptr;  ///< the exact motion (step queries)
   std::span<const BodyState> start;      ///< every body's state at t0 (sample tests)
@@ -20,6 +22,9 @@ struct NarrowInput {
   /// true: a sample test, "in contact at t0?" (discrete methods); false:
   /// the first contact in [t0, t1] from `motion` (continuous methods).
   bool sample = false;
+  /// Shapes, orientations and point-speed bounds (ccd/motion/rigid_motion.hpp): needed by
+  /// every entry but sphere x sphere; null for sphere scenes.
+  const RigidMotion* rigid = nullptr;
 };
 
 }  // namespace ccd

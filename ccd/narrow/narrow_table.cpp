@@ -1,5 +1,6 @@
 #include <ccd/narrow/narrow_table.hpp>
 
+#include <ccd/narrow/conservative_advancement.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 
 #include <stdexcept>
@@ -23,6 +24,10 @@ NarrowEntry NarrowTable::find(ShapeKind ka, ShapeKind kb) const {
 const NarrowTable& narrow_table() {
   static const NarrowTable table = [] {
     NarrowTable t;
+    // Every convex pair by conservative advancement, then the exact override.
+    for (std::size_t i = 0; i < kShapeKinds; ++i)
+      for (std::size_t k = i; k < kShapeKinds; ++k)
+        t.add(static_cast<ShapeKind>(i), static_cast<ShapeKind>(k), &conservative_advancement);
     t.add(ShapeKind::Sphere, ShapeKind::Sphere, &sphere_sphere_narrow);
     return t;
   }();

@@ -27,11 +27,12 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
     : bound_(std::move(bound)),
       knowledge_(knowledge),
       broad_(std::move(broad)),
-      // Scenes hold spheres only: the one kind pair is looked up once, here.
+      table_(&table),
+      // Sphere scenes: the one kind pair is looked up once, here.
       narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)) {}
 
 void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
-                       std::span<const std::size_t> start_piece) {
+                       std::span<const std::size_t> start_piece, const RigidMotion* rigid) {
   StepTimes local;
   Stopwatch watch(times != nullptr);
 
@@ -52,10 +53,17 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
 
   watch.start();
   out.contacts.clear();
-  const NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
-  for (const BodyPair& p : out.passed) {
-    const ContactResult c = narrow_(in, p.a, p.b);
-    if (c.found()) out.contacts.push_back({p, c});
+  const NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test(), rigid};
+  if (!rigid) {
+    for (const BodyPair& p : out.passed) {
+      const ContactResult c = narrow_(in, p.a, p.b);
+      if (c.found()) out.contacts.push_back({p, c});
+    }
+  } else {
+    for (const BodyPair& p : out.passed) {
+      const ContactResult c = table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b);
+      if (c.found()) out.contacts.push_back({p, c});
+    }
   }
   watch.stop(local.narrow);
 

@@ -13,13 +13,16 @@
 //  1. bound.prepare(ctx) -> one box per body (boxes());
 //  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
 //  3. bound.test(a, b) for every candidate -> `passed` (status Possible), in candidate order;
-//  4. narrow table entry for the kinds present (sphere x sphere: ccd/narrow/) for every
-//     passed pair -> `contacts` (found: Hit or Overlapping), in passed order.
+//  4. narrow table entry for the pair's kinds (sphere x sphere: ccd/narrow/, exact; any
+//     other pair: conservative advancement) for every passed pair -> `contacts` (found:
+//     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
+//     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
 // The narrow phase starts at t0 for every pair; PairTest::earliest is reported by the
 // bounds but not used to start it later.
 #include <bounds/bound.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/narrow_table.hpp>
 
 #include <memory>
@@ -55,8 +58,9 @@ class StepPipeline {
   /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
   /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
   /// body's piece index at t0 (StateCursor::pieces), sparing the sample test a search.
+  /// `rigid`: the shapes and spin of a scene with non-sphere bodies (null: spheres only).
   void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
-           std::span<const std::size_t> start_piece = {});
+           std::span<const std::size_t> start_piece = {}, const RigidMotion* rigid = nullptr);
 
   bool sample_test() const { return knowledge_ == Knowledge::Instant; }
   const Bound& bound() const { return *bound_; }
@@ -68,6 +72,7 @@ class StepPipeline {
   std::unique_ptr<Bound> bound_;
   Knowledge knowledge_;
   std::unique_ptr<BroadPhase> broad_;
+  const NarrowTable* table_;
   NarrowEntry narrow_;
   std::vector<Aabb> boxes_;
 };
