@@ -12,9 +12,12 @@
 #include <ccd/util/parallel_for.hpp>
 #include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
+#include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/truth_io.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -25,12 +28,7 @@ namespace ccdlab {
 using nlohmann::json;
 
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
-  if (!e.scene_path.empty()) {
-    ccd::Scene scene = ccd::load_scene(e.scene_path);
-    if (scene.has_non_spheres())
-      throw ccd::InputError(e.scene_path, "shapes", "shapes other than spheres need the rigid ground truth (not available)");
-    return scene;
-  }
+  if (!e.scene_path.empty()) return ccd::load_scene(e.scene_path);
   json params = e.scene_generator;
   const std::string name = params["generator"].get<std::string>();
   params.erase("generator");
@@ -118,7 +116,25 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
   topts.threads = options.threads;
-  const TruthIndex truth(options.truth ? options.truth->events : ccd::compute_truth(traj, topts));
+  // Scenes with non-sphere shapes: the rigid motion for the narrow phase and the certified
+  // rigid truth (ccd/truth/rigid_truth.hpp); sphere scenes keep the exact path untouched.
+  std::optional<ccd::RigidMotion> rigid;
+  if (scene.has_non_spheres()) rigid.emplace(scene, traj);
+  double truth_error = 0.0;
+  std::vector<ccd::ContactEvent> truth_events;
+  if (options.truth) {
+    truth_events = options.truth->events;
+    for (const ccd::EventError& x : options.truth->errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+  } else if (rigid) {
+    ccd::RigidTruthOptions ropts;
+    ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
+    ccd::RigidTruthResult r = ccd::compute_rigid_truth(*rigid, ropts);
+    for (const ccd::EventError& x : r.errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+    truth_events = std::move(r.events);
+  } else {
+    truth_events = ccd::compute_truth(traj, topts);
+  }
+  const TruthIndex truth(std::move(truth_events));
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -132,7 +148,9 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   RunInput in;
   in.scene = &scene;
   in.trajectories = &traj;
+  in.rigid = rigid ? &*rigid : nullptr;
   in.truth = &truth;
+  in.truth_error = truth_error;
   in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
   in.repeats = e.repeats;
   in.cancel = options.cancel;

@@ -12,6 +12,8 @@
 #include "method.hpp"
 #include "truth_index.hpp"
 
+#include <ccd/motion/rigid_motion.hpp>
+
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
 
@@ -27,7 +29,13 @@ namespace ccdlab {
 struct RunInput {
   const ccd::Scene* scene = nullptr;
   const ccd::Trajectories* trajectories = nullptr;
+  /// Shapes and spin (ccd/motion/rigid_motion.hpp) of a scene with non-sphere bodies;
+  /// null for sphere scenes (the narrow phase is then sphere x sphere throughout).
+  const ccd::RigidMotion* rigid = nullptr;
   const TruthIndex* truth = nullptr;
+  /// Seconds: the truth's largest certified error (enter_error, exit_error), widening the
+  /// window in which a detection is matched to an event; 0 for an exact truth.
+  double truth_error = 0.0;
   double acceleration_bound = 0.0;          ///< A given to Bounded bounds
   int repeats = 1;                          ///< timing repeats; times are medians
   const std::atomic<bool>* cancel = nullptr;  ///< checked once per step

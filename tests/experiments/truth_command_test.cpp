@@ -160,3 +160,19 @@ TEST_CASE("ccdlab truth: a bad ccdlab-scene/2 exits 2 with one line naming file,
   CHECK(h.status == 2);
   CHECK(h.err == "ccdlab truth: " + path + ": shapes[0].points: all points are coplanar (the hull has no volume)\n");
 }
+
+TEST_CASE("ccdlab truth on a rigid scene writes certified brackets that read back", "[cli][truth][rigid]") {
+  TempDir tmp;
+  const std::string scene = std::string(CCDLAB_SOURCE_DIR) + "/data/scenes/rigid-example.json";
+  const Run r = run(tmp, scene + " -o " + (tmp / "t.json").string());
+  REQUIRE(r.status == 0);
+  const ccd::TruthFile t = ccd::load_truth((tmp / "t.json").string());
+  CHECK(t.version == 2);
+  CHECK(t.scene_sha256 == ccd::scene_digest(ccd::load_scene(scene)));
+  REQUIRE(t.events.size() >= 5);
+  REQUIRE(t.errors.size() == t.events.size());
+  for (const ccd::EventError& e : t.errors) {
+    CHECK(e.enter_error < 1e-9);
+    CHECK(e.exit_error < 1e-9);
+  }
+}

@@ -1,0 +1,275 @@
+#include <ccd/truth/rigid_truth.hpp>
+
+#include <ccd/queries/convex_distance.hpp>
+#include <ccd/truth/pair_contact.hpp>
+#include <ccd/util/parallel_for.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+#include <tuple>
+
+namespace ccd {
+namespace {
+
+// Near: certified separated, but by no more than the distance band (see the header).
+enum class Label : std::uint8_t { Separated, Near, Overlapping, Unresolved };
+
+struct LabelledPiece {
+  double lo, hi;
+  Label label;
+};
+
+class BracketSearch {
+ public:
+  BracketSearch(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double lipschitz, double tol,
+                std::size_t max_evaluations)
+      : m_(m), a_(a), b_(b), L_(lipschitz), tol_(tol), max_(max_evaluations),
+        band_(std::max(lipschitz * tol, 1e-12 * (m.enclosing_radius(a) + m.enclosing_radius(b)))) {}
+
+  void run(double lo, double hi) { search(lo, hi); }
+  std::vector<LabelledPiece>& pieces() { return pieces_; }
+  std::size_t evaluations() const { return evaluations_; }
+
+ private:
+  void push(double lo, double hi, Label l) {
+    if (!pieces_.empty() && pieces_.back().label == l && pieces_.back().hi >= lo)
+      pieces_.back().hi = std::max(pieces_.back().hi, hi);
+    else
+      pieces_.push_back({lo, hi, l});
+  }
+
+  ConvexDistance distance(double t) {
+    ++evaluations_;
+    const Pose pa = m_.pose(a_, t), pb = m_.pose(b_, t);
+    DistanceOptions o;
+    // Resolve the distance to a fraction of what the time tolerance moves the bodies.
+    o.tolerance = std::max(0.25 * L_ * tol_, 1e-15);
+    return convex_distance(m_.proxy(a_), {pa.centre, pa.rotation}, m_.proxy(b_), {pb.centre, pb.rotation}, o);
+  }
+
+  // Labels [lo, hi] (closed) in increasing time.
+  void search(double lo, double hi) {
+    if (evaluations_ >= max_) {
+      push(lo, hi, Label::Unresolved);
+      return;
+    }
+    const double mid = lo + 0.5 * (hi - lo);
+    if (!(mid > lo && mid < hi)) {  // an interval of an ulp or two: nothing left to split
+      push(lo, hi, Label::Unresolved);
+      return;
+    }
+    const ConvexDistance d = distance(mid);
+    const double inf = std::numeric_limits<double>::infinity();
+    Label sure = Label::Unresolved;
+    double reach = 0.0;
+    if (d.status == ConvexDistance::Status::Separated) {
+      sure = d.lower > band_ ? Label::Separated : Label::Near;
+      reach = L_ > 0.0 ? d.lower / L_ : inf;
+    } else if (d.status == ConvexDistance::Status::Overlapping) {
+      sure = Label::Overlapping;
+      reach = L_ > 0.0 ? -d.upper / L_ : inf;
+    }
+    if (sure == Label::Unresolved) {
+      if (hi - lo <= tol_) {
+        push(lo, hi, Label::Unresolved);
+        return;
+      }
+      search(lo, mid);
+      search(mid, hi);
+      return;
+    }
+    // Certified on the open interval (mid - reach, mid + reach); its ends belong to the
+    // neighbouring closed sub-searches.
+    const double x0 = mid - reach, x1 = mid + reach;
+    if (x0 > lo) search(lo, x0);
+    push(std::max(lo, x0), std::min(hi, x1), sure);
+    if (x1 < hi) search(x1, hi);
+  }
+
+  const RigidMotion& m_;
+  std::uint32_t a_, b_;
+  double L_, tol_;
+  std::size_t max_;
+  double band_;  ///< metres: separations up to this do not split an event
+  std::size_t evaluations_ = 0;
+  std::vector<LabelledPiece> pieces_;
+};
+
+std::size_t auto_windows(const RigidMotion& m) {
+  const Trajectories& traj = m.centres();
+  if (traj.size() == 0) return 1;
+  double path = 0.0, diameter = 0.0;
+  for (std::size_t i = 0; i < traj.size(); ++i) {
+    const Aabb box = traj.swept_bounds(i, 0.0, traj.horizon());
+    path += (box.hi - box.lo).maxCoeff() - 2.0 * traj.radius(i);
+    diameter += 2.0 * traj.radius(i);
+  }
+  const double w = std::ceil(0.5 * path / std::max(diameter, 1e-300));
+  return static_cast<std::size_t>(std::clamp(w, 1.0, static_cast<double>(TruthOptions::max_auto_windows)));
+}
+
+struct Candidate {
+  std::uint32_t a, b, window;
+};
+
+}  // namespace
+
+std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
+                                double tol, std::size_t max_evaluations, std::vector<ContactEvent>& events,
+                                std::vector<EventError>& errors) {
+  const double horizon = m.centres().horizon();
+  const double lipschitz = m.max_point_speed(a, u0, u1) + m.max_point_speed(b, u0, u1);
+  BracketSearch search(m, a, b, lipschitz, tol, max_evaluations);
+  search.run(u0, u1);
+  auto& ps = search.pieces();
+  // A certified gap narrower than the time tolerance between two uncertified runs does not
+  // split an event (the search resolves crossings to about an ulp, leaving slivers).
+  for (std::size_t i = 1; i + 1 < ps.size(); ++i)
+    if (ps[i].label == Label::Separated && ps[i].hi - ps[i].lo <= tol && ps[i - 1].label != Label::Separated &&
+        ps[i + 1].label != Label::Separated)
+      ps[i].label = Label::Unresolved;
+  for (std::size_t i = 0; i < ps.size();) {
+    if (ps[i].label == Label::Separated) {
+      ++i;
+      continue;
+    }
+    std::size_t k = i;
+    const LabelledPiece* first_o = nullptr;
+    const LabelledPiece* last_o = nullptr;
+    for (; k < ps.size() && ps[k].label != Label::Separated; ++k)
+      if (ps[k].label == Label::Overlapping) {
+        if (!first_o) first_o = &ps[k];
+        last_o = &ps[k];
+      }
+    const double r0 = ps[i].lo, r1 = ps[k - 1].hi;
+    ContactEvent ev{a, b, 0.0, 0.0};
+    EventError err;
+    if (first_o) {
+      // enter in [r0, first_o->lo]; exit in [last_o->hi, r1].
+      if (ps[i].label == Label::Overlapping && r0 == 0.0) {
+        ev.enter = 0.0;
+      } else {
+        ev.enter = r0 + 0.5 * (first_o->lo - r0);
+        err.enter_error = std::max(ev.enter - r0, first_o->lo - ev.enter);
+      }
+      if (ps[k - 1].label == Label::Overlapping && r1 == horizon) {
+        ev.exit = horizon;
+      } else {
+        ev.exit = last_o->hi + 0.5 * (r1 - last_o->hi);
+        err.exit_error = std::max(ev.exit - last_o->hi, r1 - ev.exit);
+      }
+    } else {
+      ev.enter = ev.exit = r0 + 0.5 * (r1 - r0);
+      err.enter_error = err.exit_error = std::max(ev.enter - r0, r1 - ev.enter);
+      err.grazing = true;
+    }
+    events.push_back(ev);
+    errors.push_back(err);
+    i = k;
+  }
+  return search.evaluations();
+}
+
+RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptions& options) {
+  RigidTruthResult out;
+  const Trajectories& traj = m.centres();
+  const double T = traj.horizon();
+  const double tol = options.time_tolerance > 0.0 ? options.time_tolerance : std::ldexp(T, -30);
+  const std::size_t W = options.windows ? options.windows : auto_windows(m);
+  const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  out.stats.windows = W;
+  out.stats.threads = threads;
+  const auto n = static_cast<std::uint32_t>(traj.size());
+  auto window_start = [&](std::size_t w) { return w == W ? T : T * static_cast<double>(w) / static_cast<double>(W); };
+
+  // 1. Candidate (pair, window) entries: sort and sweep of swept boxes along x per window.
+  std::vector<std::vector<Candidate>> per_window(W);
+  parallel_for(W, threads, [&](std::size_t w, unsigned) {
+    const double u0 = window_start(w), u1 = window_start(w + 1);
+    std::vector<Aabb> boxes(n);
+    std::vector<std::uint32_t> order(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      boxes[i] = traj.swept_bounds(i, u0, u1);
+      // Rounding margin: the swept box is computed in doubles.
+      const double margin = 1e-9 * (1.0 + boxes[i].lo.cwiseAbs().maxCoeff() + boxes[i].hi.cwiseAbs().maxCoeff());
+      boxes[i].lo.array() -= margin;
+      boxes[i].hi.array() += margin;
+      order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return boxes[x].lo.x() < boxes[y].lo.x(); });
+    auto& cands = per_window[w];
+    for (std::size_t p = 0; p < order.size(); ++p) {
+      const Aabb& bp = boxes[order[p]];
+      for (std::size_t q = p + 1; q < order.size() && boxes[order[q]].lo.x() <= bp.hi.x(); ++q) {
+        if (!bp.overlaps(boxes[order[q]])) continue;
+        const std::uint32_t a = std::min(order[p], order[q]), b = std::max(order[p], order[q]);
+        cands.push_back({a, b, static_cast<std::uint32_t>(w)});
+      }
+    }
+  });
+  std::vector<Candidate> all;
+  for (auto& c : per_window) all.insert(all.end(), c.begin(), c.end());
+  std::sort(all.begin(), all.end(), [](const Candidate& x, const Candidate& y) {
+    return std::tie(x.a, x.b, x.window) < std::tie(y.a, y.b, y.window);
+  });
+  // 2. Runs of consecutive windows per pair.
+  struct Run {
+    std::uint32_t a, b;
+    double u0, u1;
+  };
+  std::vector<Run> runs;
+  for (std::size_t i = 0; i < all.size();) {
+    std::size_t k = i + 1;
+    while (k < all.size() && all[k].a == all[i].a && all[k].b == all[i].b && all[k].window == all[k - 1].window + 1) ++k;
+    runs.push_back({all[i].a, all[i].b, window_start(all[i].window), window_start(all[k - 1].window + 1)});
+    i = k;
+  }
+  out.stats.candidate_runs = runs.size();
+  // 3. Solve each run.
+  std::vector<std::vector<ContactEvent>> ev(runs.size());
+  std::vector<std::vector<EventError>> er(runs.size());
+  std::vector<std::size_t> evals(runs.size(), 0);
+  parallel_for(runs.size(), threads, [&](std::size_t r, unsigned) {
+    const Run& run = runs[r];
+    if (!options.generic_spheres && m.kind(run.a) == ShapeKind::Sphere && m.kind(run.b) == ShapeKind::Sphere) {
+      std::vector<ContactInterval> iv;
+      pair_contact_intervals(traj, run.a, run.b, run.u0, run.u1, iv);
+      for (const ContactInterval& x : iv) {
+        ev[r].push_back({run.a, run.b, x.enter, x.exit});
+        er[r].push_back({});
+      }
+      return;
+    }
+    evals[r] = pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r]);
+  });
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    out.stats.evaluations += evals[r];
+    for (std::size_t k = 0; k < ev[r].size(); ++k) {
+      out.events.push_back(ev[r][k]);
+      out.errors.push_back(er[r][k]);
+    }
+  }
+  // 4. Sort by (enter, a, b), errors alongside.
+  std::vector<std::size_t> order(out.events.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return event_order(out.events[x], out.events[y]); });
+  std::vector<ContactEvent> events;
+  std::vector<EventError> errors;
+  for (std::size_t i : order) {
+    events.push_back(out.events[i]);
+    errors.push_back(out.errors[i]);
+    out.stats.grazing += out.errors[i].grazing;
+  }
+  out.events = std::move(events);
+  out.errors = std::move(errors);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const ContactEvent& e : out.events) pairs.push_back({e.a, e.b});
+  std::sort(pairs.begin(), pairs.end());
+  out.stats.pairs_in_contact = static_cast<std::size_t>(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  return out;
+}
+
+}  // namespace ccd
