@@ -16,10 +16,15 @@ extern const Generator kSwarmGenerator;
 extern const Generator kLatticeGenerator;
 extern const Generator kMixedGenerator;
 extern const Generator kGrazingGenerator;
+extern const Generator kSticksGenerator;
+extern const Generator kPlatesGenerator;
+extern const Generator kCratesGenerator;
+extern const Generator kRocksGenerator;
 
 std::span<const Generator> generators() {
   static const Generator table[] = {kGasGenerator,     kRainGenerator,    kBulletsGenerator, kSwarmGenerator,
-                                    kLatticeGenerator, kMixedGenerator,   kGrazingGenerator};
+                                    kLatticeGenerator, kMixedGenerator,   kGrazingGenerator, kSticksGenerator,
+                                    kPlatesGenerator,  kCratesGenerator,  kRocksGenerator};
   return table;
 }
 

@@ -1,0 +1,47 @@
+// sticks, plates, crates, rocks: the shapes they promise, spin within spin_max, spheres
+// mixed in by fraction, and scenes the rigid truth and the runner accept.
+#include "generator_test_support.hpp"
+
+#include <ccd/truth/rigid_truth.hpp>
+
+#include <catch2/catch.hpp>
+#include <cmath>
+
+using ccdlab::testing::make;
+using nlohmann::json;
+
+TEST_CASE("spinning generators: shapes, spin and sphere fraction", "[generators][rigid]") {
+  const ccd::Scene sticks = make("sticks", {{"bodies", 200}, {"seed", 3}, {"size", 0.5}, {"elongation", 20}});
+  REQUIRE(sticks.shapes.size() == 1);
+  CHECK(sticks.shapes[0].kind == ccd::ShapeKind::Capsule);
+  CHECK(sticks.shapes[0].half_length == 0.5);
+  CHECK(sticks.shapes[0].radius == 0.025);
+  REQUIRE(sticks.rigid.size() == 200);
+  for (std::size_t i = 0; i < 200; ++i) {
+    CHECK(sticks.kind(i) == ccd::ShapeKind::Capsule);
+    CHECK(sticks.rigid[i].angular_velocity.norm() <= 10.0);
+    CHECK(std::fabs(sticks.rigid[i].orientation.norm() - 1.0) < 1e-15);
+  }
+  const ccd::Scene plates = make("plates", {{"bodies", 50}, {"elongation", 8}});
+  CHECK(plates.shapes[0].half_extents == ccd::Vec3(1, 1, 0.125));
+  const ccd::Scene crates = make("crates", {{"bodies", 50}, {"elongation", 4}});
+  CHECK(crates.shapes[0].half_extents == ccd::Vec3(1, 0.5, 0.25));
+  const ccd::Scene rocks = make("rocks", {{"bodies", 100}, {"spheres", 0.5}});
+  CHECK(rocks.shapes.size() == 8);
+  std::size_t spheres = 0;
+  for (std::size_t i = 0; i < 100; ++i) spheres += rocks.kind(i) == ccd::ShapeKind::Sphere;
+  CHECK(spheres > 30);
+  CHECK(spheres < 70);
+  // No spin at all: the same positions, no rotation.
+  const ccd::Scene still = make("crates", {{"bodies", 20}, {"spin_max", 0}});
+  for (const ccd::RigidBody& r : still.rigid) CHECK(r.angular_velocity.isZero(0.0));
+}
+
+TEST_CASE("a spinning-sticks scene gets a certified truth with contacts", "[generators][rigid]") {
+  const ccd::Scene s = make("sticks", {{"bodies", 300}, {"seed", 5}, {"spin_max", 20}, {"speed_max", 8}, {"fraction", 0.1}});
+  const ccd::Trajectories traj(s);
+  const ccd::RigidMotion motion(s, traj);
+  const ccd::RigidTruthResult t = ccd::compute_rigid_truth(motion);
+  CHECK(t.events.size() > 5);
+  CHECK(t.errors.size() == t.events.size());
+}
