@@ -32,6 +32,12 @@ Shape shape_from_json(const Reader& r, const json& o, const std::string& p) {
   if (!k) r.fail(p + ".kind", "unknown shape kind \"" + kind + "\" (sphere, capsule, box, hull)");
   s.kind = *k;
   switch (s.kind) {
+    case ShapeKind::Sphere: r.only_fields(o, p, {"name", "kind", "radius"}); break;
+    case ShapeKind::Capsule: r.only_fields(o, p, {"name", "kind", "half_length", "radius"}); break;
+    case ShapeKind::Box: r.only_fields(o, p, {"name", "kind", "half_extents"}); break;
+    case ShapeKind::Hull: r.only_fields(o, p, {"name", "kind", "points"}); break;
+  }
+  switch (s.kind) {
     case ShapeKind::Sphere: s.radius = r.number(r.require(o, "radius", p), p + ".radius"); break;
     case ShapeKind::Capsule:
       s.half_length = r.number(r.require(o, "half_length", p), p + ".half_length");
@@ -75,6 +81,9 @@ json shape_to_json(const Shape& s) {
 Scene scene_from_json(const json& j, const std::string& file) {
   Reader r{file};
   if (!j.is_object()) r.fail("", "a scene must be a JSON object");
+  // Version-2 names are known in both versions: a version-1 file that uses one is told
+  // it needs version 2 (below), not that the field is unknown.
+  r.only_fields(j, "", {"format", "horizon", "gravity", "box", "shapes", "bodies"});
   const json& format = r.require(j, "format", "");
   if (!format.is_string() ||
       (format.get<std::string>() != kSceneFormatV1 && format.get<std::string>() != kSceneFormat))
@@ -85,6 +94,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
   s.gravity = r.optional_vec3(j, "gravity", "");
   if (auto it = j.find("box"); it != j.end() && !it->is_null()) {
     if (!it->is_object()) r.fail("box", "must be an object with min and max");
+    r.only_fields(*it, "box", {"min", "max"});
     WallBox box;
     box.min = r.vec3(r.require(*it, "min", "box"), "box.min");
     box.max = r.vec3(r.require(*it, "max", "box"), "box.max");
@@ -109,6 +119,8 @@ Scene scene_from_json(const json& j, const std::string& file) {
     const json& b = bodies[i];
     const std::string p = body_path(i);
     if (!b.is_object()) r.fail(p, "must be an object");
+    r.only_fields(b, p, {"radius", "position", "velocity", "acceleration", "acceleration_changes", "shape",
+                         "orientation", "angular_velocity", "angular_velocity_changes"});
     Body body;
     RigidBody rigid;
     if (auto it = b.find("shape"); it != b.end()) {
@@ -131,6 +143,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
         const json& c = (*it)[k];
         const std::string kp = cp + "[" + std::to_string(k) + "]";
         if (!c.is_object()) r.fail(kp, "must be an object with t and acceleration");
+        r.only_fields(c, kp, {"t", "acceleration"});
         AccelerationChange ch;
         ch.t = r.number(r.require(c, "t", kp), kp + ".t");
         ch.acceleration = r.vec3(r.require(c, "acceleration", kp), kp + ".acceleration");
@@ -159,6 +172,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
         const json& c = (*it)[k];
         const std::string kp = cp + "[" + std::to_string(k) + "]";
         if (!c.is_object()) r.fail(kp, "must be an object with t and angular_velocity");
+        r.only_fields(c, kp, {"t", "angular_velocity"});
         AngularVelocityChange ch;
         ch.t = r.number(r.require(c, "t", kp), kp + ".t");
         ch.angular_velocity = r.vec3(r.require(c, "angular_velocity", kp), kp + ".angular_velocity");

@@ -15,7 +15,8 @@
 // (coincident, collinear or coplanar points: ccd::hull_degeneracy), a body with both
 // shape and radius, an orientation whose norm is further than 1e-6 from 1 (it is
 // normalised otherwise), angular velocity changes out of order: each throws InputError naming the file,
-// the field path and the body index (`bodies[3].radius`). Unknown fields are ignored.
+// the field path and the body index (`bodies[3].radius`). An unknown field is an
+// error naming it (JsonReader::only_fields; "comment" is allowed in every object).
 #include <ccd/io/json_reader.hpp>  // read_json_file
 #include <ccd/scene/scene.hpp>
 

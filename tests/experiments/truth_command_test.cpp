@@ -154,6 +154,7 @@ TEST_CASE("ccdlab truth: a bad ccdlab-scene/2 exits 2 with one line naming file,
   CHECK(r.err == "ccdlab truth: " + path + ": shapes[0].half_extents[2]: must be > 0\n");
   CHECK_FALSE(fs::exists(tmp / "t.json"));
   s["shapes"][0]["kind"] = "hull";
+  s["shapes"][0].erase("half_extents");
   s["shapes"][0]["points"] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
   std::ofstream(path) << s.dump();
   const Run h = run(tmp, path);
