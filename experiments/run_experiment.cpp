@@ -131,6 +131,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
   in.repeats = e.repeats;
   in.cancel = options.cancel;
+  in.list_missed = options.list_missed;
 
   std::vector<RunRecord> records(jobs.size());
   ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {

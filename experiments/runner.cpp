@@ -186,6 +186,7 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
       ++r.initial_contacts;
       continue;
     }
+    if (std::isnan(c.lag[e]) && in.list_missed) r.missed_events.push_back(static_cast<std::uint32_t>(e));
     if (!std::isnan(c.lag[e])) {
       ++r.detected;
       lag_sum += c.lag[e];
@@ -200,6 +201,7 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
     }
   }
   r.missed = r.events - r.initial_contacts - r.detected;
+  r.listed_missed = in.list_missed;
   if (r.detected > 0) {
     r.mean_lag = lag_sum / double(r.detected);
     r.mean_penetration = pen_sum / double(r.detected);
@@ -239,7 +241,7 @@ nlohmann::json counters_json(const std::vector<std::pair<std::string, std::uint6
 }  // namespace
 
 nlohmann::json to_json(const RunRecord& r) {
-  return {{"method", r.method},
+  nlohmann::json j = {{"method", r.method},
           {"bound", r.bound},
           {"broad_phase", r.broad_phase},
           {"options", r.options},
@@ -275,6 +277,8 @@ nlohmann::json to_json(const RunRecord& r) {
             {"unexpected_contacts", r.self_check_unexpected},
             {"undetected_sampled_events", r.self_check_undetected},
             {"counts_stable", r.counts_stable}}}};
+  if (r.listed_missed) j["missed_events"] = r.missed_events;
+  return j;
 }
 
 }  // namespace ccdlab

@@ -31,6 +31,9 @@ struct RunInput {
   double acceleration_bound = 0.0;          ///< A given to Bounded bounds
   int repeats = 1;                          ///< timing repeats; times are medians
   const std::atomic<bool>* cancel = nullptr;  ///< checked once per step
+  /// Also list the missed events (RunRecord::missed_events): for pictures and the Python
+  /// module; the counts do not change.
+  bool list_missed = false;
 };
 
 struct RunRecord {
@@ -69,6 +72,11 @@ struct RunRecord {
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   bool counts_stable = true;           ///< identical counts over all repeats
+  /// With RunInput::list_missed: the indices (into the truth's events, in (enter, a, b)
+  /// order) of the missed events, ascending; empty otherwise. to_json writes it as
+  /// "missed_events" only when it was asked for, so results files do not change.
+  std::vector<std::uint32_t> missed_events;
+  bool listed_missed = false;
   bool cancelled = false;
 };
 
