@@ -14,7 +14,7 @@ void bind_errors(py::module_& m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const ccd::InputError& e) {
-      py::object instance = input_error(e.what());
+      py::object instance = py::reinterpret_borrow<py::object>(input_error.ptr())(e.what());
       instance.attr("file") = e.file();
       instance.attr("field") = e.field();
       PyErr_SetObject(input_error.ptr(), instance.ptr());
