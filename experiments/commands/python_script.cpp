@@ -23,7 +23,11 @@ int run_python_script(const std::string& command, const std::string& script, std
   }
 #ifdef CCDLAB_PYTHON_MODULE_DIR
   const char* old = std::getenv("PYTHONPATH");
-  const std::string pythonpath = std::string(CCDLAB_PYTHON_MODULE_DIR) + (old && *old ? ":" + std::string(old) : "");
+  std::string pythonpath = CCDLAB_PYTHON_MODULE_DIR;
+  if (old && *old) {
+    pythonpath += ':';
+    pythonpath += old;
+  }
   ::setenv("PYTHONPATH", pythonpath.c_str(), 1);
 #endif
   std::vector<std::string> argv_text{python, path};

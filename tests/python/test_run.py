@@ -22,7 +22,7 @@ def counts(results):
 
 def small_experiment(scene_file):
     return {"format": "ccdlab-experiment/1", "name": "small", "scene": str(scene_file),
-            "dt": [0.05, 0.0125, 0.001953125],
+            "dt": [0.25, 0.0625, 0.0078125],
             "methods": ["sphere/grid", "aabb/sap", "capsule/grid", "horn:4/sap", "swept_aabb/brute"]}
 
 
@@ -45,7 +45,9 @@ def test_run_gives_the_counts_of_the_command_line(tmp_path, cli, scene_file):
     assert counts(from_dict) == counts(from_cli)
     assert from_path["truth"]["events"] == from_cli["truth"]["events"] > 0
     assert from_path["experiment"] == from_cli["experiment"]
-    missed = {r["method"]: r["missed"] for r in from_cli["records"]}
+    missed = {}
+    for r in from_cli["records"]:
+        missed[r["method"]] = missed.get(r["method"], 0) + r["missed"]
     assert missed["aabb/sap"] > 0 and missed["capsule/grid"] == 0  # the run can tell methods apart
 
 
