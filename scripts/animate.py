@@ -225,6 +225,9 @@ def animate(args):
             for s_index in range(len(samples)):
                 xy = pos_samples[s_index, p, [ax_u, ax_v]]
                 ax_zoom.add_patch(Circle(xy, radius[p], fill=False, ec=colour, lw=0.8, ls="--"))
+            if len(samples):  # the sample centres, visible however small the body
+                ax_zoom.plot(pos_samples[:, p, ax_u], pos_samples[:, p, ax_v], "o", mfc="none", mec=colour,
+                             markersize=5)
             touching = ev_enter[e] <= t <= ev_exit[e]
             ax_zoom.add_patch(Circle(pos[k, p, [ax_u, ax_v]], radius[p], color="red" if touching else colour,
                                      alpha=0.7))
