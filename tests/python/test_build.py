@@ -29,3 +29,15 @@ def test_module_objects_have_no_march_native(commands):
 def test_module_is_the_one_of_this_build():
     import ccdlab
     assert pathlib.Path(ccdlab.__file__).resolve().parent == (BUILD_DIR / "python").resolve()
+
+
+def test_cmake_install_puts_it_where_python3_finds_it(tmp_path):
+    import subprocess
+    import sys
+    cmake = os.environ.get("CMAKE_COMMAND", "cmake")
+    subprocess.run([cmake, "--install", str(BUILD_DIR), "--prefix", str(tmp_path)], check=True, capture_output=True)
+    site = tmp_path / f"lib/python{sys.version_info.major}.{sys.version_info.minor}/dist-packages"
+    env = dict(os.environ, PYTHONPATH=str(site))
+    where = subprocess.run(["/usr/bin/python3", "-c", "import ccdlab; print(ccdlab.__file__); print(len(ccdlab.methods()['methods']))"],
+                           env=env, capture_output=True, text=True, check=True, cwd=tmp_path).stdout.split()
+    assert pathlib.Path(where[0]).parent == site and int(where[1]) > 0
