@@ -8,6 +8,7 @@
 #include <experiments/method.hpp>
 #include <experiments/run_experiment.hpp>
 
+#include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/parallel_for.hpp>
@@ -52,7 +53,14 @@ py::object run(const py::object& experiment, unsigned threads, std::optional<std
           std::snprintf(text, sizeof text, "%.3g body-steps, above the limit %.3g", work, kMaxWorkWithoutForce);
           throw ccd::InputError(file, "dt", std::string("the run needs ") + text + " without force=True");
         }
-        return run_experiment(e, scene, options);
+        try {
+          return run_experiment(e, scene, options);
+        } catch (const ccd::TooManyPieces& err) {  // as `ccdlab run` reports it
+          throw ccd::InputError(e.scene_path.empty() ? file : e.scene_path,
+                                (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
+                                "needs more than " + std::to_string(err.limit()) +
+                                    " trajectory pieces over the horizon (wall reflections and acceleration changes)");
+        }
       },
       &cancel);
   return to_python(results);
