@@ -15,6 +15,11 @@ cp "$root/results/default-plots/speed_accuracy.png" "$root/docs/images/default-s
 "$build/ccdlab" scene bullets bodies=1000 bullets=50 seed=1 -o "$root/results/tunnelling-scene.json" >/dev/null
 "$build/ccdlab" animate "$root/results/tunnelling-scene.json" --results "$root/results/studies/tunnelling/tunnelling.json" \
   --method aabb/sap --dt 0.019 --from 0.46 --to 0.52 --frames-per-step 8 -o "$root/docs/images/tunnelling.gif" 2>/dev/null
+# The report's overlay chart (docs/python.md): the default experiment and the tunnelling study.
+"$build/ccdlab" report "$root/results/default.json" "$root/results/studies/tunnelling/tunnelling.json" \
+  -o "$root/results/report" >/dev/null
+cp "$root/results/report/missed.png" "$root/docs/images/report-missed.png"
 echo "$root/docs/images/default-speed-accuracy.png"
 echo "$root/docs/studies/tunnelling-missed.png"
 echo "$root/docs/images/tunnelling.gif"
+echo "$root/docs/images/report-missed.png"

@@ -165,7 +165,7 @@ def file_notes(files):
             parts.append(f"{truth['events']} ground-truth events")
         if env.get("cpu"):
             parts.append(f"on {env['cpu']}")
-        lines.append(" ".join(parts))
+        lines.append(parts[0] + " " + ", ".join(parts[1:]))
     return lines
 
 
