@@ -226,14 +226,17 @@ def write_report(paths, out_dir, title):
 
     def table_html(header, body):
         out = ["<table>", "<tr>" + "".join(f"<th>{html.escape(h)}</th>" for h in header) + "</tr>"]
-        out += ["<tr>" + "".join(f"<td>{html.escape(c)}</td>" for c in row) + "</tr>" for row in body]
+        def td(c):  # numbers right-aligned, words left-aligned
+            numeric = c[:1].isdigit() or c == "none" or c == ""
+            return f"<td>{html.escape(c)}</td>" if numeric else f'<td class="t">{html.escape(c)}</td>'
+        out += ["<tr>" + "".join(td(c) for c in row) + "</tr>" for row in body]
         return "\n".join(out + ["</table>"])
 
     h = ["<!DOCTYPE html>", '<html lang="en"><head><meta charset="utf-8">',
          f"<title>{html.escape(title)}</title>",
          "<style>body{font-family:sans-serif;max-width:1100px;margin:2em auto;padding:0 1em}"
          "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #bbb;padding:3px 8px;"
-         "text-align:right}td:first-child,th:first-child{text-align:left}img{max-width:100%}</style>",
+         "text-align:right}td.t,th:first-child{text-align:left}img{max-width:100%}</style>",
          "</head><body>", f"<h1>{html.escape(title)}</h1>", f"<p>{html.escape(explain)}</p>", "<ul>"]
     h += [f"<li>{html.escape(n)}</li>" for n in notes] + ["</ul>", "<h2>Zero-miss frontier and cost</h2>"]
     h.append(table_html(head, [cells(r) for r in rows]))
