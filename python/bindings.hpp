@@ -22,7 +22,8 @@ namespace py = pybind11;
 /// were prepared on it).
 class PyScene {
  public:
-  explicit PyScene(ccd::Scene scene, std::string source) : scene_(std::move(scene)), source_(std::move(source)) {}
+  explicit PyScene(ccd::Scene scene, std::string source)
+      : scene_(std::move(scene)), source_(std::move(source)) {}
   const ccd::Scene& scene() const { return scene_; }
   const std::string& source() const { return source_; }
   /// The exact motion; built once (walls solved), safe to call without the GIL.

@@ -53,14 +53,15 @@ class PyBound {
     const auto n = static_cast<py::ssize_t>(boxes.size());
     auto* heap = new std::vector<ccd::Aabb>(std::move(boxes));
     py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<ccd::Aabb>*>(p); });
-    return py::array_t<double>({n, py::ssize_t{2}, py::ssize_t{3}}, reinterpret_cast<const double*>(heap->data()),
-                               owner);
+    return py::array_t<double>({n, py::ssize_t{2}, py::ssize_t{3}},
+                               reinterpret_cast<const double*>(heap->data()), owner);
   }
 
   py::tuple test_pairs(const py::array_t<std::uint32_t, py::array::c_style | py::array::forcecast>& pairs) {
     const std::string who = "Bound(" + name_ + ").test_pairs";
     if (!motion_) throw ccd::InputError(who, "", "call prepare(scene, t0, t1) first");
-    if (pairs.ndim() != 2 || pairs.shape(1) != 2) throw ccd::InputError(who, "pairs", "must be an (m, 2) array");
+    if (pairs.ndim() != 2 || pairs.shape(1) != 2)
+      throw ccd::InputError(who, "pairs", "must be an (m, 2) array");
     const auto m = static_cast<std::size_t>(pairs.shape(0));
     const std::uint32_t* p = pairs.data();
     for (std::size_t i = 0; i < m; ++i)
@@ -90,7 +91,7 @@ class PyBound {
   std::string name_;
   ccd::BoundSpec spec_;
   std::unique_ptr<ccd::Bound> bound_;
-  std::shared_ptr<PyScene> scene_;                     // what the last prepare saw
+  std::shared_ptr<PyScene> scene_;  // what the last prepare saw
   std::shared_ptr<const ccd::Trajectories> motion_;
   std::vector<ccd::BodyState> states_;
   std::mutex mutex_;
@@ -99,7 +100,8 @@ class PyBound {
 }  // namespace
 
 void bind_bounds(py::module_& m) {
-  py::class_<PyBound>(m, "Bound", "A bound of the registry, e.g. Bound('capsule'), Bound('horn:4'), Bound('aabb')")
+  py::class_<PyBound>(m, "Bound",
+                      "A bound of the registry, e.g. Bound('capsule'), Bound('horn:4'), Bound('aabb')")
       .def(py::init<const std::string&>(), py::arg("spec"))
       .def("prepare", &PyBound::prepare, py::arg("scene"), py::arg("t0"), py::arg("t1") = 0.0,
            py::arg("acceleration_bound") = py::none(),
@@ -108,9 +110,11 @@ void bind_bounds(py::module_& m) {
       .def("test_pairs", &PyBound::test_pairs, py::arg("pairs"),
            "The bound's own test of each pair after prepare: (possible bool array, earliest time array)")
       .def_property_readonly("name", &PyBound::name)
-      .def_property_readonly("knowledge", [](const PyBound& b) { return std::string(ccd::to_string(b.spec().info->knowledge)); })
+      .def_property_readonly(
+          "knowledge", [](const PyBound& b) { return std::string(ccd::to_string(b.spec().info->knowledge)); })
       .def_property_readonly("conservative", [](const PyBound& b) { return b.spec().info->conservative; })
-      .def_property_readonly("options", [](const PyBound& b) { return to_python(b.spec().options.to_json()); })
+      .def_property_readonly("options",
+                             [](const PyBound& b) { return to_python(b.spec().options.to_json()); })
       .def("__repr__", [](const PyBound& b) { return "<ccdlab.Bound " + b.name() + ">"; });
 }
 

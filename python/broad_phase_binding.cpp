@@ -16,14 +16,16 @@ namespace ccdlab::python {
 
 static_assert(sizeof(ccd::Aabb) == 6 * sizeof(double) && std::is_standard_layout_v<ccd::Aabb>,
               "boxes are read in place from (n, 2, 3) float64 arrays");
-static_assert(sizeof(ccd::BodyPair) == 2 * sizeof(std::uint32_t), "pairs are returned in place as (m, 2) uint32");
+static_assert(sizeof(ccd::BodyPair) == 2 * sizeof(std::uint32_t),
+              "pairs are returned in place as (m, 2) uint32");
 
 using Boxes = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 std::span<const ccd::Aabb> boxes_view(const Boxes& boxes, const std::string& who) {
   const bool shape_ok = (boxes.ndim() == 3 && boxes.shape(1) == 2 && boxes.shape(2) == 3) ||
                         (boxes.ndim() == 2 && boxes.shape(1) == 6);
-  if (!shape_ok) throw ccd::InputError(who, "boxes", "must be an (n, 2, 3) or (n, 6) array of lo, hi corners");
+  if (!shape_ok)
+    throw ccd::InputError(who, "boxes", "must be an (n, 2, 3) or (n, 6) array of lo, hi corners");
   const auto n = static_cast<std::size_t>(boxes.shape(0));
   const auto* data = reinterpret_cast<const ccd::Aabb*>(boxes.data());
   for (std::size_t i = 0; i < n; ++i)
@@ -60,7 +62,8 @@ class PyBroadPhase {
     const auto m = static_cast<py::ssize_t>(pairs.size());
     auto* heap = new std::vector<ccd::BodyPair>(std::move(pairs));
     py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<ccd::BodyPair>*>(p); });
-    return py::array_t<std::uint32_t>({m, py::ssize_t{2}}, reinterpret_cast<const std::uint32_t*>(heap->data()), owner);
+    return py::array_t<std::uint32_t>({m, py::ssize_t{2}},
+                                      reinterpret_cast<const std::uint32_t*>(heap->data()), owner);
   }
 
   py::dict stats() const {
@@ -85,13 +88,15 @@ class PyBroadPhase {
 }  // namespace
 
 void bind_broad_phases(py::module_& m) {
-  py::class_<PyBroadPhase>(m, "BroadPhase",
-                           "A broad phase of the registry, e.g. BroadPhase('sap') or BroadPhase('grid:cell=2'); "
-                           "it keeps its state between calls (frames), as sap does")
+  py::class_<PyBroadPhase>(
+      m, "BroadPhase",
+      "A broad phase of the registry, e.g. BroadPhase('sap') or BroadPhase('grid:cell=2'); "
+      "it keeps its state between calls (frames), as sap does")
       .def(py::init<const std::string&>(), py::arg("spec"))
       .def("find_pairs", &PyBroadPhase::find_pairs, py::arg("boxes"),
            "Every pair of overlapping boxes (closed intervals), a < b, each once: an (m, 2) uint32 array")
-      .def("stats", &PyBroadPhase::stats, "Box tests, rebuilt, and the method's own counters of the last call")
+      .def("stats", &PyBroadPhase::stats,
+           "Box tests, rebuilt, and the method's own counters of the last call")
       .def_property_readonly("name", &PyBroadPhase::name)
       .def_property_readonly("options", &PyBroadPhase::options)
       .def("__repr__", [](const PyBroadPhase& b) { return "<ccdlab.BroadPhase " + b.name() + ">"; });

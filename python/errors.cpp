@@ -9,7 +9,8 @@ namespace ccdlab::python {
 
 void bind_errors(py::module_& m) {
   static py::exception<ccd::InputError> input_error(m, "InputError", PyExc_ValueError);
-  input_error.doc() = "Bad input: a ValueError whose .file and .field name where (field '' when the whole input)";
+  input_error.doc() =
+      "Bad input: a ValueError whose .file and .field name where (field '' when the whole input)";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

@@ -4,8 +4,9 @@
 
 PYBIND11_MODULE(ccdlab, m) {
   using namespace ccdlab::python;
-  m.doc() = "ccdlab: continuous collision detection of moving spheres (scenes, exact ground truth, "
-            "bounds, broad phases, experiments)";
+  m.doc() =
+      "ccdlab: continuous collision detection of moving spheres (scenes, exact ground truth, "
+      "bounds, broad phases, experiments)";
   m.attr("__version__") = CCDLAB_VERSION;
   bind_errors(m);
   bind_scene(m);

@@ -19,8 +19,8 @@
 namespace ccdlab::python {
 namespace {
 
-py::object run(const py::object& experiment, unsigned threads, std::optional<std::string> truth_path, bool quiet,
-               bool force, bool missed_events) {
+py::object run(const py::object& experiment, unsigned threads, std::optional<std::string> truth_path,
+               bool quiet, bool force, bool missed_events) {
   const bool is_path = py::isinstance<py::str>(experiment) || py::hasattr(experiment, "__fspath__");
   std::string file = "experiment";
   Experiment e;
@@ -50,16 +50,18 @@ py::object run(const py::object& experiment, unsigned threads, std::optional<std
         const double work = experiment_work(e, scene.bodies.size(), scene.horizon);
         if (work > kMaxWorkWithoutForce && !force) {
           char text[64];
-          std::snprintf(text, sizeof text, "%.3g body-steps, above the limit %.3g", work, kMaxWorkWithoutForce);
+          std::snprintf(text, sizeof text, "%.3g body-steps, above the limit %.3g", work,
+                        kMaxWorkWithoutForce);
           throw ccd::InputError(file, "dt", std::string("the run needs ") + text + " without force=True");
         }
         try {
           return run_experiment(e, scene, options);
         } catch (const ccd::TooManyPieces& err) {  // as `ccdlab run` reports it
-          throw ccd::InputError(e.scene_path.empty() ? file : e.scene_path,
-                                (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
-                                "needs more than " + std::to_string(err.limit()) +
-                                    " trajectory pieces over the horizon (wall reflections and acceleration changes)");
+          throw ccd::InputError(
+              e.scene_path.empty() ? file : e.scene_path,
+              (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
+              "needs more than " + std::to_string(err.limit()) +
+                  " trajectory pieces over the horizon (wall reflections and acceleration changes)");
         }
       },
       &cancel);
@@ -109,8 +111,9 @@ py::dict methods() {
 }  // namespace
 
 void bind_run(py::module_& m) {
-  m.def("run", &run, py::arg("experiment"), py::kw_only(), py::arg("threads") = 0, py::arg("truth") = py::none(),
-        py::arg("quiet") = true, py::arg("force") = false, py::arg("missed_events") = false,
+  m.def("run", &run, py::arg("experiment"), py::kw_only(), py::arg("threads") = 0,
+        py::arg("truth") = py::none(), py::arg("quiet") = true, py::arg("force") = false,
+        py::arg("missed_events") = false,
         "Runs an experiment (a file path, or a ccdlab-experiment/1 dict whose scene path is relative to "
         "the current folder) and returns the ccdlab-results/2 document `ccdlab run` writes. threads=0: every "
         "core; truth: a truth file to reuse; missed_events=True adds to each record the indices of the truth "

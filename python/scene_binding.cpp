@@ -16,9 +16,10 @@ std::shared_ptr<const ccd::Trajectories> PyScene::trajectories() const {
     try {
       trajectories_ = std::make_shared<const ccd::Trajectories>(scene_);
     } catch (const ccd::TooManyPieces& err) {
-      throw ccd::InputError(source_, "bodies[" + std::to_string(err.body()) + "]",
-                            "needs more than " + std::to_string(err.limit()) +
-                                " trajectory pieces over the horizon (wall reflections and acceleration changes)");
+      throw ccd::InputError(
+          source_, "bodies[" + std::to_string(err.body()) + "]",
+          "needs more than " + std::to_string(err.limit()) +
+              " trajectory pieces over the horizon (wall reflections and acceleration changes)");
     }
   }
   return trajectories_;
@@ -55,7 +56,8 @@ py::array_t<double> positions(const PyScene& self, const std::vector<double>& ti
         for (int c = 0; c < 3; ++c) out[(k * n + b) * 3 + c] = p[c];
       }
   }
-  return owning_array(std::move(out), {static_cast<py::ssize_t>(times.size()), static_cast<py::ssize_t>(n), 3});
+  return owning_array(std::move(out),
+                      {static_cast<py::ssize_t>(times.size()), static_cast<py::ssize_t>(n), 3});
 }
 
 std::shared_ptr<PyScene> generate(const std::string& name, const py::kwargs& params) {
@@ -73,8 +75,8 @@ std::shared_ptr<PyScene> generate(const std::string& name, const py::kwargs& par
 }  // namespace
 
 void bind_scene(py::module_& m) {
-  py::class_<PyScene, std::shared_ptr<PyScene>>(m, "Scene",
-                                                "Spheres with exact piecewise-quadratic motion (ccdlab-scene/1)")
+  py::class_<PyScene, std::shared_ptr<PyScene>>(
+      m, "Scene", "Spheres with exact piecewise-quadratic motion (ccdlab-scene/1)")
       .def("__len__", [](const PyScene& s) { return s.scene().bodies.size(); })
       .def_property_readonly("horizon", [](const PyScene& s) { return s.scene().horizon; })
       .def_property_readonly("gravity",
@@ -82,25 +84,41 @@ void bind_scene(py::module_& m) {
                                const ccd::Vec3& g = s.scene().gravity;
                                return py::make_tuple(g.x(), g.y(), g.z());
                              })
-      .def_property_readonly("radius",
-                             [](const PyScene& s) {
-                               std::vector<double> r;
-                               for (const ccd::Body& b : s.scene().bodies) r.push_back(b.radius);
-                               const auto n = static_cast<py::ssize_t>(r.size());
-                               return owning_array(std::move(r), {n});
-                             },
-                             "(n,) radii, a copy")
-      .def_property_readonly("position", [](const PyScene& s) { return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.position; }); },
-                             "(n, 3) positions at t = 0, a copy")
-      .def_property_readonly("velocity", [](const PyScene& s) { return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.velocity; }); },
-                             "(n, 3) velocities at t = 0, a copy")
-      .def_property_readonly("acceleration", [](const PyScene& s) { return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.acceleration; }); },
-                             "(n, 3) own accelerations at t = 0 (gravity not included), a copy")
-      .def_property_readonly("max_acceleration", [](const PyScene& s) { return s.scene().max_acceleration(); })
-      .def("to_json", [](const PyScene& s) { return to_python(ccd::scene_to_json(s.scene())); },
-           "The scene as a ccdlab-scene/1 dict")
-      .def("save", [](const PyScene& s, const std::string& path) { ccd::save_scene(s.scene(), path); },
-           py::arg("path"), "Writes the scene file atomically")
+      .def_property_readonly(
+          "radius",
+          [](const PyScene& s) {
+            std::vector<double> r;
+            for (const ccd::Body& b : s.scene().bodies) r.push_back(b.radius);
+            const auto n = static_cast<py::ssize_t>(r.size());
+            return owning_array(std::move(r), {n});
+          },
+          "(n,) radii, a copy")
+      .def_property_readonly(
+          "position",
+          [](const PyScene& s) {
+            return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.position; });
+          },
+          "(n, 3) positions at t = 0, a copy")
+      .def_property_readonly(
+          "velocity",
+          [](const PyScene& s) {
+            return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.velocity; });
+          },
+          "(n, 3) velocities at t = 0, a copy")
+      .def_property_readonly(
+          "acceleration",
+          [](const PyScene& s) {
+            return per_body(s.scene(), [](const ccd::Body& b) -> const ccd::Vec3& { return b.acceleration; });
+          },
+          "(n, 3) own accelerations at t = 0 (gravity not included), a copy")
+      .def_property_readonly("max_acceleration",
+                             [](const PyScene& s) { return s.scene().max_acceleration(); })
+      .def(
+          "to_json", [](const PyScene& s) { return to_python(ccd::scene_to_json(s.scene())); },
+          "The scene as a ccdlab-scene/1 dict")
+      .def(
+          "save", [](const PyScene& s, const std::string& path) { ccd::save_scene(s.scene(), path); },
+          py::arg("path"), "Writes the scene file atomically")
       .def("positions", &positions, py::arg("times"),
            "(len(times), n, 3) exact centre positions at the given times (walls solved)")
       .def("__repr__", [](const PyScene& s) {
@@ -108,16 +126,18 @@ void bind_scene(py::module_& m) {
                std::to_string(s.scene().horizon) + " s>";
       });
 
-  m.def("load_scene",
-        [](const std::string& path) {
-          return run_interruptible([&]() { return std::make_shared<PyScene>(ccd::load_scene(path), path); });
-        },
-        py::arg("path"), "Reads and validates a ccdlab-scene/1 file (errors: ccdlab.InputError)");
-  m.def("scene_from_json",
-        [](const py::object& j) {
-          return std::make_shared<PyScene>(ccd::scene_from_json(from_python(j, "scene"), "scene"), "scene");
-        },
-        py::arg("scene"), "A scene from a ccdlab-scene/1 dict (as to_json returns)");
+  m.def(
+      "load_scene",
+      [](const std::string& path) {
+        return run_interruptible([&]() { return std::make_shared<PyScene>(ccd::load_scene(path), path); });
+      },
+      py::arg("path"), "Reads and validates a ccdlab-scene/1 file (errors: ccdlab.InputError)");
+  m.def(
+      "scene_from_json",
+      [](const py::object& j) {
+        return std::make_shared<PyScene>(ccd::scene_from_json(from_python(j, "scene"), "scene"), "scene");
+      },
+      py::arg("scene"), "A scene from a ccdlab-scene/1 dict (as to_json returns)");
   m.def("generate", &generate, py::arg("name"),
         "A generated scene: generate('gas', bodies=500, seed=7) (the generators of `ccdlab scene`)");
   m.def("generators", []() {

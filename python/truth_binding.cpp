@@ -33,10 +33,14 @@ PyTruth make_truth(ccd::TruthFile truth) {
   const auto n = static_cast<py::ssize_t>(t.file->events.size());
   const py::ssize_t stride = sizeof(ccd::ContactEvent);
   auto* base = reinterpret_cast<char*>(t.file->events.data());
-  t.a = py::array(py::dtype::of<std::uint32_t>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, a), t.owner);
-  t.b = py::array(py::dtype::of<std::uint32_t>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, b), t.owner);
-  t.enter = py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, enter), t.owner);
-  t.exit = py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, exit), t.owner);
+  t.a = py::array(py::dtype::of<std::uint32_t>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, a),
+                  t.owner);
+  t.b = py::array(py::dtype::of<std::uint32_t>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, b),
+                  t.owner);
+  t.enter =
+      py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, enter), t.owner);
+  t.exit =
+      py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, exit), t.owner);
   for (py::array* view : {&t.a, &t.b, &t.enter, &t.exit})  // read-only views of the table
     view->attr("flags").attr("writeable") = false;
   if (!t.file->errors.empty()) {
@@ -73,29 +77,35 @@ void bind_truth(py::module_& m) {
       .def_property_readonly("scene_sha256", [](const PyTruth& t) { return t.file->scene_sha256; })
       .def("__len__", [](const PyTruth& t) { return t.file->events.size(); })
       .def("__iter__", [](const PyTruth& t) { return py::iter(py::make_tuple(t.a, t.b, t.enter, t.exit)); })
-      .def("to_json", [](const PyTruth& t) { return to_python(ccd::truth_to_json(*t.file)); },
-           "The ccdlab-truth/2 document, as `ccdlab truth` writes it")
-      .def("save", [](const PyTruth& t, const std::string& path) { ccd::save_truth(*t.file, path); },
-           py::arg("path"));
+      .def(
+          "to_json", [](const PyTruth& t) { return to_python(ccd::truth_to_json(*t.file)); },
+          "The ccdlab-truth/2 document, as `ccdlab truth` writes it")
+      .def(
+          "save", [](const PyTruth& t, const std::string& path) { ccd::save_truth(*t.file, path); },
+          py::arg("path"));
 
-  m.def("truth",
-        [](const PyScene& scene, unsigned threads) {
-          ccd::TruthFile file = run_interruptible([&]() {
-            ccd::TruthOptions options;
-            options.threads = threads;
-            ccd::TruthFile f;
-            f.horizon = scene.scene().horizon;
-            f.events = ccd::compute_truth(*scene.trajectories(), options);
-            f.scene_sha256 = ccd::scene_digest(scene.scene());
-            return f;
-          });
-          return make_truth(std::move(file));
-        },
-        py::arg("scene"), py::arg("threads") = 0,
-        "The exact ground truth of the scene (threads=0: every core); Ctrl-C waits for it to finish");
-  m.def("load_truth",
-        [](const std::string& path) { return make_truth(run_interruptible([&]() { return ccd::load_truth(path); })); },
-        py::arg("path"), "Reads and validates a ccdlab-truth file");
+  m.def(
+      "truth",
+      [](const PyScene& scene, unsigned threads) {
+        ccd::TruthFile file = run_interruptible([&]() {
+          ccd::TruthOptions options;
+          options.threads = threads;
+          ccd::TruthFile f;
+          f.horizon = scene.scene().horizon;
+          f.events = ccd::compute_truth(*scene.trajectories(), options);
+          f.scene_sha256 = ccd::scene_digest(scene.scene());
+          return f;
+        });
+        return make_truth(std::move(file));
+      },
+      py::arg("scene"), py::arg("threads") = 0,
+      "The exact ground truth of the scene (threads=0: every core); Ctrl-C waits for it to finish");
+  m.def(
+      "load_truth",
+      [](const std::string& path) {
+        return make_truth(run_interruptible([&]() { return ccd::load_truth(path); }));
+      },
+      py::arg("path"), "Reads and validates a ccdlab-truth file");
 }
 
 }  // namespace ccdlab::python

@@ -6,7 +6,9 @@
 namespace ccdlab {
 namespace {
 
-int run_animate(std::span<const std::string> args) { return run_python_script("animate", "animate.py", args); }
+int run_animate(std::span<const std::string> args) {
+  return run_python_script("animate", "animate.py", args);
+}
 
 }  // namespace
 

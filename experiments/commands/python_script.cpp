@@ -1,16 +1,17 @@
 #include "python_script.hpp"
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
-#include <unistd.h>
 #include <vector>
 
 namespace ccdlab {
 
-int run_python_script(const std::string& command, const std::string& script, std::span<const std::string> args) {
+int run_python_script(const std::string& command, const std::string& script,
+                      std::span<const std::string> args) {
   const char* dir_env = std::getenv("CCDLAB_SCRIPTS_DIR");
   const std::string dir = dir_env && *dir_env ? dir_env : CCDLAB_SCRIPTS_DIR;
   const std::string path = dir + "/" + script;
@@ -18,7 +19,8 @@ int run_python_script(const std::string& command, const std::string& script, std
   const std::string python = python_env && *python_env ? python_env : "/usr/bin/python3";
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {
-    std::cerr << "ccdlab " << command << ": " << path << " not found (set CCDLAB_SCRIPTS_DIR to ccdlab's scripts folder)\n";
+    std::cerr << "ccdlab " << command << ": " << path
+              << " not found (set CCDLAB_SCRIPTS_DIR to ccdlab's scripts folder)\n";
     return 1;
   }
 #ifdef CCDLAB_PYTHON_MODULE_DIR

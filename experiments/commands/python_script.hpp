@@ -15,6 +15,7 @@ namespace ccdlab {
 
 /// Runs scripts/`script` with `args`; returns only on failure (exit status 1, message on
 /// stderr naming `command`).
-int run_python_script(const std::string& command, const std::string& script, std::span<const std::string> args);
+int run_python_script(const std::string& command, const std::string& script,
+                      std::span<const std::string> args);
 
 }  // namespace ccdlab

@@ -1,6 +1,8 @@
 # `ccdlab animate`: a tunnelling contact built from dyadic numbers, missed by a discrete
 # method at dt = 1/8 and drawn; the continuous method misses nothing; bad input exit 2.
 import json
+import shutil
+import subprocess
 
 import numpy as np
 import pytest
@@ -19,7 +21,7 @@ SCENE = {"format": "ccdlab-scene/1", "horizon": 1.0,
 
 
 @pytest.fixture(scope="module")
-def run_files(tmp_path_factory, ):
+def run_files(tmp_path_factory):
     from conftest import ccdlab_cli
     folder = tmp_path_factory.mktemp("animate")
     scene = write_json(folder / "tunnel.json", SCENE)
@@ -81,3 +83,15 @@ def test_results_of_another_scene_exit_2(run_files, cli, tmp_path):
     run = cli("animate", other_file, "--results", results, "--method", "aabb/brute", "--dt", "0.125",
               "-o", tmp_path / "x.gif", check=False)
     assert run.returncode == 2 and "truth.scene_sha256" in run.stderr
+
+
+@pytest.mark.skipif(shutil.which("ffmpeg") is None, reason="ffmpeg is not installed")
+def test_mp4_with_ffmpeg(run_files, cli):
+    folder, scene, results = run_files
+    out = folder / "missed.mp4"
+    cli("animate", scene, "--results", results, "--method", "aabb/brute", "--dt", "0.125",
+        "--from", "0.25", "--to", "0.375", "-o", out)
+    probe = subprocess.run(["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0",
+                            "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", str(out)],
+                           capture_output=True, text=True, check=True)
+    assert int(probe.stdout.strip()) == 7
