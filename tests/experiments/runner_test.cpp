@@ -193,3 +193,40 @@ TEST_CASE("events in progress at t = 0 are counted apart from misses, lag and pe
   CHECK(j["initial_contacts"] == 1);
   CHECK(j["missed_fraction"] == 1.0);  // 1 missed of the 1 event not in progress at t = 0
 }
+
+TEST_CASE("missed events are listed only on request and the counts do not change", "[runner]") {
+  // Head-on pair plus a body 2 riding beside body 0 at distance 1 = r + r (touching over
+  // [0, 10]: an initial contact, never missed), which body 1 grazes at t = 5 exactly
+  // (a tangency, enter == exit). At dt = 2 the samples 0, 2, ..., 10 miss [4.5, 5.5] and
+  // the tangency; at dt = 0.5 the sample t = 5 sees both.
+  ccd::Scene s = head_on();
+  s.bodies.push_back({0.5, Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3::Zero(), {}});
+  const Fixture f(s);
+  REQUIRE(f.truth.events().size() == 3);
+  ccdlab::RunInput in;
+  in.scene = &f.scene;
+  in.trajectories = &f.traj;
+  in.truth = &f.truth;
+  const ccdlab::RunRecord plain = run_method(in, parse_method("aabb/brute"), 2.0);
+  CHECK(plain.missed == 2);
+  CHECK(plain.initial_contacts == 1);
+  CHECK(plain.missed_events.empty());
+  CHECK_FALSE(ccdlab::to_json(plain).contains("missed_events"));
+  in.list_missed = true;
+  const ccdlab::RunRecord listed = run_method(in, parse_method("aabb/brute"), 2.0);
+  CHECK(listed.missed == plain.missed);
+  CHECK(listed.detected == plain.detected);
+  REQUIRE(listed.missed_events.size() == 2);
+  CHECK(listed.missed_events[0] < listed.missed_events[1]);
+  for (std::uint32_t i : listed.missed_events) {
+    const ccd::ContactEvent& e = f.truth.events()[i];
+    CHECK((e.a == 1 || e.b == 1));  // (0, 1) and (1, 2), never the initial contact (0, 2)
+    CHECK(e.enter > 0.0);
+  }
+  CHECK(ccdlab::to_json(listed)["missed_events"] ==
+        nlohmann::json::array({listed.missed_events[0], listed.missed_events[1]}));
+  const ccdlab::RunRecord fine = run_method(in, parse_method("aabb/brute"), 0.5);
+  CHECK(fine.missed == 0);
+  CHECK(fine.missed_events.empty());
+  CHECK(ccdlab::to_json(fine)["missed_events"] == nlohmann::json::array());
+}
