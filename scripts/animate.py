@@ -136,8 +136,9 @@ def animate(args):
         raise BadInput(f"{args.results}: truth.scene_sha256: the results are of another scene than {args.scene}")
     experiment = {"format": "ccdlab-experiment/1", "name": "animate", "scene": os.path.abspath(args.scene),
                   "dt": [dt], "methods": [args.method]}
-    used = res.get("experiment", {}).get("acceleration_bound_used")
-    if isinstance(used, (int, float)) and used >= 0:
+    recorded = res.get("experiment")
+    used = recorded.get("acceleration_bound_used") if isinstance(recorded, dict) else None
+    if isinstance(used, (int, float)) and not isinstance(used, bool) and 0 <= used < float("inf"):
         experiment["acceleration_bound"] = used
     with tempfile.TemporaryDirectory() as tmp:
         truth.save(os.path.join(tmp, "truth.json"))
