@@ -29,9 +29,6 @@ struct RunOptions {
   /// check_stored_truth) used instead of computing it; null: compute it.
   const ccd::TruthFile* truth = nullptr;
   std::string truth_file;  ///< where `truth` came from (recorded in the results)
-  /// Each record also lists its missed events ("missed_events": indices into the truth's
-  /// events in (enter, a, b) order); off for `ccdlab run`, whose files do not have it.
-  bool list_missed = false;
 };
 
 /// The experiment's scene (file or generator). Throws ccd::InputError naming `file`.

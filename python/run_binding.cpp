@@ -30,6 +30,7 @@ py::object run(const py::object& experiment, unsigned threads, std::optional<std
   } else {
     e = experiment_from_json(from_python(experiment, file), file);
   }
+  if (missed_events) e.list_missed = true;  // as `ccdlab run --list-missed`
   std::atomic<bool> cancel{false};
   nlohmann::json results = run_interruptible(
       [&]() {
@@ -39,7 +40,6 @@ py::object run(const py::object& experiment, unsigned threads, std::optional<std
         options.threads = static_cast<int>(ccd::resolve_threads(threads));
         options.quiet = quiet;
         options.cancel = &cancel;
-        options.list_missed = missed_events;
         ccd::TruthFile stored;
         if (truth_path) {
           stored = ccd::load_truth(*truth_path);
@@ -116,8 +116,8 @@ void bind_run(py::module_& m) {
         py::arg("missed_events") = false,
         "Runs an experiment (a file path, or a ccdlab-experiment/1 dict whose scene path is relative to "
         "the current folder) and returns the ccdlab-results/2 document `ccdlab run` writes. threads=0: every "
-        "core; truth: a truth file to reuse; missed_events=True adds to each record the indices of the truth "
-        "events it missed");
+        "core; truth: a truth file to reuse; missed_events=True lists in each record the events it missed "
+        "({a, b, enter, exit}, as `ccdlab run --list-missed`)");
   m.def("methods", &methods,
         "The bounds and broad phases with their options, and every composed method name (`ccdlab methods`)");
 }

@@ -11,7 +11,8 @@ Draws the scene between T0 and T1, projected on the two widest axes of its box:
           the method saw them at its samples t_k = k dt (outlines), their paths, and the
           contact (red) at its exact enter time;
   bottom  a time line: the samples (ticks), the missed contacts (red bars), the frame's time.
-The missed contacts are the runner's own (ccdlab.run with missed_events=True): an event is
+The missed contacts are the runner's own (ccdlab.run with missed_events=True, the list of
+`ccdlab run --list-missed`): an event is
 missed by a discrete method when no sample falls inside it, by a continuous one when no step
 containing its enter time confirmed it. The method must be one of RESULTS.json's and the
 scene must be the results' scene (same digest); when a record has this dt (within 1 %) its dt
@@ -153,10 +154,9 @@ def animate(args):
     if record is None:
         print(f"ccdlab animate: note: {args.results} has no record of {args.method} at dt = {args.dt:g}; "
               "computed", file=sys.stderr)
-    missed = np.array(run_record["missed_events"], dtype=np.int64)
-    in_window = missed[(truth.exit[missed] >= t0) & (truth.enter[missed] <= t1)] if missed.size else missed
+    missed = [m for m in run_record["missed_events"] if m["exit"] >= t0 and m["enter"] <= t1]
     print(f"ccdlab animate: {args.method} at dt = {dt:.6g} s misses {run_record['missed']} of "
-          f"{run_record['events']} contacts, {in_window.size} between {t0:g} and {t1:g} s", file=sys.stderr)
+          f"{run_record['events']} contacts, {len(missed)} between {t0:g} and {t1:g} s", file=sys.stderr)
 
     times = np.linspace(t0, t1, frames)
     samples = np.arange(math.ceil(t0 / dt - 1e-9), math.floor(t1 / dt + 1e-9) + 1) * dt
@@ -167,10 +167,10 @@ def animate(args):
     ax_u, ax_v = projection_axes(scene.to_json(), pos)
     names = "xyz"
 
-    ev_a = truth.a[in_window].astype(np.int64)
-    ev_b = truth.b[in_window].astype(np.int64)
-    ev_enter = truth.enter[in_window]
-    ev_exit = truth.exit[in_window]
+    ev_a = np.array([m["a"] for m in missed], dtype=np.int64)
+    ev_b = np.array([m["b"] for m in missed], dtype=np.int64)
+    ev_enter = np.array([m["enter"] for m in missed], dtype=np.float64)
+    ev_exit = np.array([m["exit"] for m in missed], dtype=np.float64)
     ev_where = 0.5 * (scene.positions(ev_enter.tolist())[np.arange(len(ev_a)), ev_a] +
                       scene.positions(ev_enter.tolist())[np.arange(len(ev_a)), ev_b]) if len(ev_a) else np.zeros((0, 3))
 

@@ -13,7 +13,13 @@ namespace ccdlab {
 int run_python_script(const std::string& command, const std::string& script,
                       std::span<const std::string> args) {
   const char* dir_env = std::getenv("CCDLAB_SCRIPTS_DIR");
-  const std::string dir = dir_env && *dir_env ? dir_env : CCDLAB_SCRIPTS_DIR;
+  std::string dir = dir_env && *dir_env ? dir_env : CCDLAB_SCRIPTS_DIR;
+  if (!dir_env || !*dir_env) {  // installed: PREFIX/bin/ccdlab and PREFIX/share/ccdlab/scripts
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    const auto installed = exe.parent_path().parent_path() / "share" / "ccdlab" / "scripts";
+    if (!ec && std::filesystem::is_regular_file(installed / script, ec)) dir = installed.string();
+  }
   const std::string path = dir + "/" + script;
   const char* python_env = std::getenv("CCDLAB_PYTHON3");
   const std::string python = python_env && *python_env ? python_env : "/usr/bin/python3";

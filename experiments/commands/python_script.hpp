@@ -5,9 +5,10 @@
 // job (Debian's python3-matplotlib), and `animate` needs the ccdlab Python module: this
 // build's python/ folder is put first on PYTHONPATH.
 //
-// The scripts folder is this source tree's scripts/ (set at build time), or the folder
-// named by the environment variable CCDLAB_SCRIPTS_DIR; the interpreter is /usr/bin/python3
-// unless CCDLAB_PYTHON3 names another.
+// The scripts folder is the one named by the environment variable CCDLAB_SCRIPTS_DIR, else
+// PREFIX/share/ccdlab/scripts when the program is installed as PREFIX/bin/ccdlab, else this
+// source tree's scripts/ (set at build time); the interpreter is /usr/bin/python3 unless
+// CCDLAB_PYTHON3 names another.
 #include <span>
 #include <string>
 

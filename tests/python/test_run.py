@@ -51,20 +51,29 @@ def test_run_gives_the_counts_of_the_command_line(tmp_path, cli, scene_file):
     assert missed["aabb/sap"] > 0 and missed["capsule/grid"] == 0  # the run can tell methods apart
 
 
-def test_missed_events_are_listed_on_request(scene_file):
+def test_missed_events_are_listed_on_request(tmp_path, cli, scene_file):
     results = ccdlab.run(small_experiment(scene_file), missed_events=True)
-    truth = ccdlab.truth(ccdlab.load_scene(str(scene_file)))
+    a, b, enter, exit = ccdlab.truth(ccdlab.load_scene(str(scene_file)))
+    events = {(int(x), int(y), float(e0), float(e1)) for x, y, e0, e1 in zip(a, b, enter, exit)}
     for r in results["records"]:
-        assert len(r["missed_events"]) == r["missed"]
-        assert r["missed_events"] == sorted(set(r["missed_events"]))
-        for i in r["missed_events"]:
-            assert truth.enter[i] > 0.0  # events in progress at t = 0 are never counted missed
+        listed = r["missed_events"]
+        assert len(listed) == r["missed"]
+        keys = [(m["a"], m["b"], m["enter"], m["exit"]) for m in listed]
+        assert keys == sorted(keys, key=lambda k: (k[2], k[0], k[1]))
+        for k in keys:
+            assert k in events and k[2] > 0.0  # truth events; never one in progress at t = 0
         if r["knowledge"] == "instant":
             # A discrete method misses only events that contain no sample time k dt.
-            for i in r["missed_events"]:
-                k = int(truth.enter[i] // r["dt"]) + 1
-                assert k * r["dt"] > truth.exit[i] or k * r["dt"] > results["scene"]["horizon"]
+            for _, _, e0, e1 in keys:
+                k = int(e0 // r["dt"]) + 1
+                assert k * r["dt"] > e1 or k * r["dt"] > results["scene"]["horizon"]
+    assert sum(r["missed"] for r in results["records"]) > 0
     assert "missed_events" not in ccdlab.run(small_experiment(scene_file))["records"][0]
+    # The same lists as `ccdlab run --list-missed`.
+    experiment = write_json(tmp_path / "small.json", small_experiment(scene_file))
+    cli("run", experiment, "-o", tmp_path / "r.json", "--quiet", "--list-missed")
+    from_cli = json.loads((tmp_path / "r.json").read_text())
+    assert [r["missed_events"] for r in from_cli["records"]] == [r["missed_events"] for r in results["records"]]
 
 
 def test_methods_lists_the_registries(cli):
