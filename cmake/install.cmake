@@ -16,6 +16,9 @@ install(TARGETS ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_runner ccdlab_a
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ccdlab)
 install(TARGETS ccdlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# The scripts behind `ccdlab report` and `ccdlab animate` (experiments/commands/python_script.hpp).
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/report.py ${PROJECT_SOURCE_DIR}/scripts/animate.py
+  DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
 foreach(dir ccd bounds experiments)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ccdlab/${dir}
     FILES_MATCHING PATTERN "*.hpp")
