@@ -12,9 +12,10 @@ extern const Command kTruthCommand;
 extern const Command kSceneCommand;
 extern const Command kMethodsCommand;
 extern const Command kMergeCommand;
+extern const Command kCcdCommand;
 
 std::span<const Command> commands() {
-  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand};
+  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand, kCcdCommand};
   return table;
 }
 
