@@ -3,7 +3,7 @@
 # Run as root, or as a user with sudo. Extra package names may be passed as arguments.
 set -euo pipefail
 pkgs=(build-essential cmake git libeigen3-dev libboost-dev libgsl-dev catch2 nlohmann-json3-dev
-      libbenchmark-dev python3-matplotlib libfcl-dev libbullet-dev "$@")
+      libbenchmark-dev python3-matplotlib libfcl-dev libbullet-dev libgmp-dev "$@")
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

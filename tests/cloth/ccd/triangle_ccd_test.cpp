@@ -136,3 +136,47 @@ TEST_CASE("triangle CCD reports bad input and a spent budget as possible contact
     CHECK(triangle_ccd(PrimitivePair::VertexFace, q).status == QueryStatus::Degenerate);
   }
 }
+
+TEST_CASE("triangle CCD finds constructed contacts anywhere on the primitives", "[cloth][ccd]") {
+  // Contacts built exactly: at t = 1/2 the vertex is the face point with barycentric
+  // (a, b) (dyadic, a + b <= 1, often on an edge or corner, often near a + b = 1), or
+  // edge a's point s meets edge b's point u. x(1) = 2 x(1/2) - x(0) is exact for these
+  // coordinates, so the contact is exactly there; the kernel must report it.
+  std::mt19937_64 rng(161616);
+  std::uniform_int_distribution<int> coord(-64, 64), param(0, 16);
+  auto point = [&]() -> Vec3 {
+    const double x = coord(rng), y = coord(rng), z = coord(rng);  // sequenced: one order everywhere
+    return Vec3(x, y, z) / 64.0;
+  };
+  int checked = 0;
+  for (int i = 0; i < 1500; ++i) {
+    const double a = param(rng) / 16.0, b = param(rng) / 16.0;
+    LinearQuery q;
+    for (auto& p : q.x) p = point();
+    Vec3 mid[4];
+    for (int k = 1; k < 4; ++k) mid[k] = (q.x[static_cast<std::size_t>(k)] + q.x[static_cast<std::size_t>(k + 4)]) / 2;
+    if (a + b <= 1.0) {  // vertex-face
+      const Vec3 target = (1 - a - b) * mid[1] + a * mid[2] + b * mid[3];
+      q.x[4] = 2 * target - q.x[0];
+      INFO("vf " << i);
+      CHECK(triangle_ccd(PrimitivePair::VertexFace, q).status == QueryStatus::Hit);
+      ++checked;
+    }
+    // edge-edge: a's point at s = a meets b's point at u = b; move edge a's second end.
+    LinearQuery e;
+    for (auto& p : e.x) p = point();
+    const Vec3 m0 = (e.x[0] + e.x[4]) / 2, m2 = (e.x[2] + e.x[6]) / 2, m3 = (e.x[3] + e.x[7]) / 2;
+    const Vec3 target = (1 - b) * m2 + b * m3;
+    if (a == 0) continue;
+    // (1 - a) m0 + a m1 = target  =>  m1 = (target - (1 - a) m0) / a (dyadic: a = k/16, exact
+    // when a is a power of two; others are checked only if exact).
+    const Vec3 m1 = (target - (1 - a) * m0) / a;
+    if (((1 - a) * m0 + a * m1 - target).norm() != 0.0) continue;
+    e.x[5] = 2 * m1 - e.x[1];
+    if (((e.x[1] + e.x[5]) / 2 - m1).norm() != 0.0) continue;
+    INFO("ee " << i);
+    CHECK(triangle_ccd(PrimitivePair::EdgeEdge, e).status == QueryStatus::Hit);
+    ++checked;
+  }
+  CHECK(checked > 1000);
+}
