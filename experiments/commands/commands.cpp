@@ -13,9 +13,10 @@ extern const Command kSceneCommand;
 extern const Command kMethodsCommand;
 extern const Command kMergeCommand;
 extern const Command kCcdCommand;
+extern const Command kClothCommand;
 
 std::span<const Command> commands() {
-  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand, kCcdCommand};
+  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand, kCcdCommand, kClothCommand};
   return table;
 }
 
