@@ -2,6 +2,7 @@
 // ccdlab-cloth/1 file) and writes its frames.
 #include "command.hpp"
 
+#include <cloth/cull/cullers.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/scene/input_error.hpp>
@@ -23,6 +24,7 @@ int run_cloth(std::span<const std::string> args) {
   };
   std::string scene_arg, out_path;
   int n = 32, every = 10;
+  bool cull = false;
   std::optional<int> steps;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -47,6 +49,8 @@ int run_cloth(std::span<const std::string> args) {
       const auto v = integer(1, 1000000);
       if (!v) return usage_error("--every needs an integer in [1, 1000000]");
       every = *v;
+    } else if (a == "--cull") {
+      cull = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_arg.empty()) {
@@ -74,13 +78,26 @@ int run_cloth(std::span<const std::string> args) {
     };
     record();
     long iterations = 0;
-    const auto start = std::chrono::steady_clock::now();
+    double seconds = 0.0;
+    // --cull: per step interval, the bvh and bvh_cones candidates (continuous mode, the
+    // scene's thickness as separation) and their time.
+    const std::vector<std::string_view> measured = {"bvh", "bvh_cones"};
+    std::vector<double> candidates(measured.size(), 0.0), cull_seconds(measured.size(), 0.0);
     for (int k = 1; k <= scene.steps; ++k) {
+      const std::vector<ccd::Vec3> before = sim.positions();
+      const auto start = std::chrono::steady_clock::now();
       sim.step();
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       iterations += sim.last_iterations();
+      if (cull)
+        for (std::size_t m = 0; m < measured.size(); ++m) {
+          const auto t0 = std::chrono::steady_clock::now();
+          const auto c = ccd::cloth::find_culler(measured[m])->cull(sim.mesh(), before, sim.positions(), scene.thickness);
+          cull_seconds[m] += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          candidates[m] += static_cast<double>(c.size());
+        }
       if (k % every == 0 || k == scene.steps) record();
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json j;
     j["format"] = "ccdlab-cloth-frames/1";
     j["scene"] = scene_arg;
@@ -101,6 +118,13 @@ int run_cloth(std::span<const std::string> args) {
               << "time per step: " << seconds / scene.steps * 1e3 << " ms, CG iterations per step: "
               << static_cast<double>(iterations) / scene.steps << "\n"
               << "frames: " << frames.size() << " written to " << out_path << "\n";
+    if (cull) {
+      for (std::size_t m = 0; m < measured.size(); ++m)
+        std::cout << measured[m] << ": " << candidates[m] / scene.steps << " candidates per step, "
+                  << cull_seconds[m] / scene.steps * 1e3 << " ms per step\n";
+      std::cout << "normal-cone culling ratio (bvh_cones / bvh candidates): "
+                << (candidates[0] > 0 ? candidates[1] / candidates[0] : 1.0) << "\n";
+    }
   } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab cloth: " << e.what() << "\n";
     return kExitBadInput;
@@ -115,12 +139,14 @@ int run_cloth(std::span<const std::string> args) {
 
 extern const Command kClothCommand = {
     "cloth", "simulate a cloth scene (drape, twist, pile or a ccdlab-cloth/1 file) and write its frames",
-    "usage: ccdlab cloth drape|twist|pile|SCENE.json -o FRAMES.json [--n N] [--steps K] [--every E]\n"
+    "usage: ccdlab cloth drape|twist|pile|SCENE.json -o FRAMES.json [--n N] [--steps K] [--every E] [--cull]\n"
     "\n"
     "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
     "state (default 10, and the last) as JSON: triangles, obstacles and per frame the time and\n"
     "the particle positions (x, y, z per particle). --n sets the particles per side of a\n"
-    "built-in scene (default 32); --steps overrides the scene's step count.\n"
+    "built-in scene (default 32); --steps overrides the scene's step count. --cull also\n"
+    "runs the bvh and bvh_cones cullers on every step interval (continuous, separation =\n"
+    "thickness) and prints their candidates and time per step.\n"
     "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
