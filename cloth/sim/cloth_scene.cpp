@@ -76,14 +76,6 @@ namespace {
 
 using nlohmann::json;
 
-void check_fields(const JsonReader& r, const json& obj, const std::string& path, std::initializer_list<std::string_view> known) {
-  for (auto it = obj.begin(); it != obj.end(); ++it) {
-    bool ok = false;
-    for (std::string_view k : known) ok = ok || it.key() == k;
-    if (!ok) r.fail(path.empty() ? it.key() : path + "." + it.key(), "unknown field");
-  }
-}
-
 const json& object(const JsonReader& r, const json& v, const std::string& field) {
   if (!v.is_object()) r.fail(field, "must be an object");
   return v;
@@ -103,7 +95,7 @@ double non_negative(const JsonReader& r, const json& v, const std::string& field
 
 SpringParams spring(const JsonReader& r, const json& obj, const std::string& path) {
   object(r, obj, path);
-  check_fields(r, obj, path, {"stiffness", "damping"});
+  r.only_fields(obj, path, {"stiffness", "damping"});
   return {non_negative(r, r.require(obj, "stiffness", path), path + ".stiffness"),
           non_negative(r, r.require(obj, "damping", path), path + ".damping")};
 }
@@ -122,12 +114,12 @@ std::vector<std::uint32_t> particles(const JsonReader& r, const json& v, const s
 ClothScene scene_from_json(const json& j, const std::string& file) {
   const JsonReader r{file};
   if (!j.is_object()) r.fail("", "a cloth scene must be a JSON object");
-  check_fields(r, j, "", {"format", "grid", "particle_mass", "springs", "air_damping", "pinned", "spin", "gravity", "spheres", "floor",
+  r.only_fields(j, "", {"format", "grid", "particle_mass", "springs", "air_damping", "pinned", "spin", "gravity", "spheres", "floor",
                           "thickness", "step", "steps"});
   if (r.string(r.require(j, "format", ""), "format") != "ccdlab-cloth/1") r.fail("format", "must be \"ccdlab-cloth/1\"");
   ClothScene s;
   const json& g = object(r, r.require(j, "grid", ""), "grid");
-  check_fields(r, g, "grid", {"nx", "ny", "origin", "du", "dv"});
+  r.only_fields(g, "grid", {"nx", "ny", "origin", "du", "dv"});
   s.nx = static_cast<int>(r.integer(r.require(g, "nx", "grid"), "grid.nx", 2, 1000));
   s.ny = static_cast<int>(r.integer(r.require(g, "ny", "grid"), "grid.ny", 2, 1000));
   s.origin = r.vec3(r.require(g, "origin", "grid"), "grid.origin");
@@ -136,7 +128,7 @@ ClothScene scene_from_json(const json& j, const std::string& file) {
   if (!(s.du.cross(s.dv).norm() > 0)) r.fail("grid.dv", "must not be parallel to grid.du (nor zero)");
   s.particle_mass = positive(r, r.require(j, "particle_mass", ""), "particle_mass");
   const json& sp = object(r, r.require(j, "springs", ""), "springs");
-  check_fields(r, sp, "springs", {"structural", "shear", "bend"});
+  r.only_fields(sp, "springs", {"structural", "shear", "bend"});
   s.structural = spring(r, r.require(sp, "structural", "springs"), "springs.structural");
   s.shear = spring(r, r.require(sp, "shear", "springs"), "springs.shear");
   s.bend = spring(r, r.require(sp, "bend", "springs"), "springs.bend");
@@ -150,7 +142,7 @@ ClothScene scene_from_json(const json& j, const std::string& file) {
   }
   if (j.contains("spin")) {
     const json& o = object(r, j["spin"], "spin");
-    check_fields(r, o, "spin", {"particles", "center", "axis", "rate"});
+    r.only_fields(o, "spin", {"particles", "center", "axis", "rate"});
     Spin spin;
     spin.particles = particles(r, r.require(o, "particles", "spin"), "spin.particles", count);
     for (std::size_t i = 0; i < spin.particles.size(); ++i)
@@ -169,7 +161,7 @@ ClothScene scene_from_json(const json& j, const std::string& file) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       const std::string p = "spheres[" + std::to_string(i) + "]";
       object(r, a[i], p);
-      check_fields(r, a[i], p, {"center", "radius"});
+      r.only_fields(a[i], p, {"center", "radius"});
       s.spheres.push_back({r.vec3(r.require(a[i], "center", p), p + ".center"), positive(r, r.require(a[i], "radius", p), p + ".radius")});
     }
   }

@@ -54,10 +54,10 @@ TEST_CASE("cloth scene files: fields read and every error named", "[cloth][sim]"
   CHECK(error_of(j) == "c.json: grid.nx: must be an integer in [2, 1000]");
   j = good();
   j["colour"] = "red";
-  CHECK(error_of(j) == "c.json: colour: unknown field");
+  CHECK_THAT(error_of(j), Catch::StartsWith("c.json: colour: unknown field"));
   j = good();
   j["springs"]["bend"]["stifness"] = 1;
-  CHECK(error_of(j) == "c.json: springs.bend.stifness: unknown field");
+  CHECK(error_of(j) == "c.json: springs.bend.stifness: unknown field (did you mean \"stiffness\"?)");
   j = good();
   j["pinned"][1] = 12;
   CHECK(error_of(j) == "c.json: pinned[1]: must be an integer in [0, 11]");
