@@ -14,10 +14,12 @@ extern const Command kMethodsCommand;
 extern const Command kMergeCommand;
 extern const Command kReportCommand;
 extern const Command kAnimateCommand;
+extern const Command kCcdCommand;
+extern const Command kClothCommand;
 
 std::span<const Command> commands() {
-  static const Command table[] = {kRunCommand, kTruthCommand, kSceneCommand, kMethodsCommand, kMergeCommand,
-                                  kReportCommand, kAnimateCommand};
+  static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
+                                  kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand};
   return table;
 }
 

@@ -1,0 +1,220 @@
+#include "triangle_ccd.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace ccd::cloth {
+namespace {
+
+// Error bound of a corner value (u = 2^-53 is the unit roundoff; M = max |input|).
+// Parameters t, a, b are dyadic with at most 52 fractional bits, so 1 - t, 1 - a - b,
+// 1 - a and 1 - b are exact and lie in [-1, 1].
+//   x(t) = (1 - t) x0 + t x1: two rounded products and a rounded sum, |x| <= M:
+//     error <= 2.01 u M.
+//   vertex-face: g = w0 X0 + w1 X1 + w2 X2 with |w0| + |w1| + |w2| <= 3 (the clipped
+//     corners lie in the triangle, where the sum is 1; 3 allows any corner of a box): error <= 3 * 2.01 u M (the X's) + 3 u * 3.01 M (three
+//     products, two sums) = 15.1 u M; F = X - g, |X - g| <= 4.01 M: + 2.01 u M + 4.01 u M.
+//     Total <= 21.2 u M.
+//   edge-edge: each side (1 - s) A0 + s A1, weights <= 1 in sum: 2.01 u M + 2.01 u M;
+//     difference: + 2.01 u M. Total <= 10.1 u M.
+// Both are below 32 u M = 16 eps M. Underflow adds at most 2^-1074 per operation: the
+// absolute term 2^-1060 covers far more than the dozen operations of a corner.
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+constexpr double kUnderflowSlack = 0x1p-1060;
+constexpr double kMaxMagnitude = 1e300;
+constexpr int kMaxDepth = 50;  // parameters keep <= 50 fractional bits
+
+struct Box {
+  double lo[3], hi[3];  // t, a, b
+  int depth[3];
+};
+
+// F at up to 2 x 5 parameter points: both ends of the time interval times the corners of
+// the (a, b) region. Vertex-face regions are the box clipped to a + b <= 1 (a polygon of
+// up to 5 corners: F is affine in (a, b) for each t, so its range over the region is
+// spanned by these corners); edge-edge regions are the 4 box corners.
+struct Samples {
+  int n = 0;                // points per time
+  double f[2][5][3];        // [time][corner][component]
+  double da[2][3], db[2][3];  // dF/da, dF/db at both times
+};
+
+inline double lerp(double x0, double x1, double t) { return (1.0 - t) * x0 + t * x1; }
+
+// The corners of [a0, a1] x [b0, b1] clipped to a + b <= 1 (Sutherland-Hodgman against
+// one half-plane: a rectangle gives at most 5 corners). Crossing points lie on the box's
+// axis-parallel edges, at a = 1 - b or b = 1 - a: exact for dyadic a, b.
+int clipped_corners(const Box& box, double (&ab)[5][2]) {
+  const double a0 = box.lo[1], a1 = box.hi[1], b0 = box.lo[2], b1 = box.hi[2];
+  const double rect[4][2] = {{a0, b0}, {a1, b0}, {a1, b1}, {a0, b1}};
+  int n = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double* p = rect[i];
+    const double* q = rect[(i + 1) % 4];
+    const bool p_in = p[0] + p[1] <= 1.0, q_in = q[0] + q[1] <= 1.0;
+    if (p_in) {
+      ab[n][0] = p[0];
+      ab[n][1] = p[1];
+      ++n;
+    }
+    if (p_in != q_in) {  // the edge crosses a + b = 1
+      if (p[1] == q[1]) {  // horizontal edge
+        ab[n][0] = 1.0 - p[1];
+        ab[n][1] = p[1];
+      } else {  // vertical edge
+        ab[n][0] = p[0];
+        ab[n][1] = 1.0 - p[0];
+      }
+      ++n;
+    }
+  }
+  return n;
+}
+
+template <PrimitivePair Kind>
+void evaluate(const LinearQuery& q, const Box& box, Samples& out) {
+  double ab[5][2];
+  if constexpr (Kind == PrimitivePair::VertexFace) {
+    out.n = clipped_corners(box, ab);
+  } else {
+    out.n = 4;
+    for (int i = 0; i < 4; ++i) {
+      ab[i][0] = (i & 1) ? box.hi[1] : box.lo[1];
+      ab[i][1] = (i & 2) ? box.hi[2] : box.lo[2];
+    }
+  }
+  for (int it = 0; it < 2; ++it) {
+    const double t = it == 0 ? box.lo[0] : box.hi[0];
+    double x[4][3];
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 3; ++k) x[i][k] = lerp(q.x[static_cast<std::size_t>(i)][k], q.x[static_cast<std::size_t>(i + 4)][k], t);
+    for (int k = 0; k < 3; ++k) {
+      if constexpr (Kind == PrimitivePair::VertexFace) {
+        out.da[it][k] = x[2][k] - x[1][k];
+        out.db[it][k] = x[3][k] - x[1][k];
+      } else {
+        out.da[it][k] = x[1][k] - x[0][k];
+        out.db[it][k] = x[3][k] - x[2][k];
+      }
+    }
+    for (int c = 0; c < out.n; ++c) {
+      const double a = ab[c][0], b = ab[c][1];
+      double* f = out.f[it][c];
+      if constexpr (Kind == PrimitivePair::VertexFace) {
+        const double w0 = 1.0 - a - b;
+        for (int k = 0; k < 3; ++k) f[k] = x[0][k] - ((w0 * x[1][k] + a * x[2][k]) + b * x[3][k]);
+      } else {
+        for (int k = 0; k < 3; ++k) f[k] = ((1.0 - a) * x[0][k] + a * x[1][k]) - ((1.0 - b) * x[2][k] + b * x[3][k]);
+      }
+    }
+  }
+}
+
+template <PrimitivePair Kind>
+TriangleCcdResult run(const LinearQuery& q, const TriangleCcdOptions& opt) {
+  TriangleCcdResult result;
+  double m = 0.0;
+  for (const Vec3& p : q.x)
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(p[k]) || std::abs(p[k]) > kMaxMagnitude) {
+        result.status = QueryStatus::Degenerate;
+        result.toi = 0.0;
+        return result;
+      }
+      m = std::max(m, std::abs(p[k]));
+    }
+  // The query's extent (largest coordinate range) sets the width counted as contact.
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    double lo = q.x[0][k], hi = q.x[0][k];
+    for (const Vec3& p : q.x) {
+      lo = std::min(lo, p[k]);
+      hi = std::max(hi, p[k]);
+    }
+    extent = std::max(extent, hi - lo);
+  }
+  const double err = 16.0 * kEps * m + kUnderflowSlack;
+  // Rounded up: thr >= separation + err exactly.
+  const double thr = std::nextafter(opt.separation + err, std::numeric_limits<double>::infinity());
+  const double width_limit = std::max(opt.tolerance * extent, 4.0 * err);
+
+  thread_local std::vector<Box> stack;
+  stack.clear();
+  stack.push_back(Box{{0, 0, 0}, {1, 1, 1}, {0, 0, 0}});
+  Samples c;
+  auto first_open_time = [&](double t) {
+    for (const Box& b : stack) t = std::min(t, b.lo[0]);
+    return t;
+  };
+  while (!stack.empty()) {
+    const Box box = stack.back();
+    stack.pop_back();
+    if (Kind == PrimitivePair::VertexFace && box.lo[1] + box.lo[2] > 1.0) continue;  // exact: dyadic
+    if (result.boxes == opt.max_boxes) {
+      result.status = QueryStatus::Hit;
+      result.budget_spent = true;
+      result.toi = first_open_time(box.lo[0]);
+      return result;
+    }
+    ++result.boxes;
+    evaluate<Kind>(q, box, c);
+    bool excluded = false;
+    double width = 0.0;
+    for (int k = 0; k < 3 && !excluded; ++k) {
+      double lo = c.f[0][0][k], hi = lo;
+      for (int it = 0; it < 2; ++it)
+        for (int i = 0; i < c.n; ++i) {
+          lo = std::min(lo, c.f[it][i][k]);
+          hi = std::max(hi, c.f[it][i][k]);
+        }
+      excluded = lo > thr || hi < -thr;
+      width = std::max(width, hi - lo);
+    }
+    if (excluded) continue;
+    // The split direction: the parameter along which F changes most over the box (an
+    // estimate; it only steers the search).
+    double change[3] = {0.0, 0.0, 0.0};
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < c.n; ++i) change[0] = std::max(change[0], std::abs(c.f[1][i][k] - c.f[0][i][k]));
+      for (int it = 0; it < 2; ++it) {
+        change[1] = std::max(change[1], std::abs(c.da[it][k]) * (box.hi[1] - box.lo[1]));
+        change[2] = std::max(change[2], std::abs(c.db[it][k]) * (box.hi[2] - box.lo[2]));
+      }
+    }
+    int dim = -1;
+    double best = -1.0;
+    for (int d = 0; d < 3; ++d) {
+      if (box.depth[d] >= kMaxDepth) continue;
+      if (change[d] > best) {
+        best = change[d];
+        dim = d;
+      }
+    }
+    if (width <= width_limit || dim < 0) {
+      result.status = QueryStatus::Hit;
+      result.toi = first_open_time(box.lo[0]);
+      return result;
+    }
+    const double mid = 0.5 * (box.lo[dim] + box.hi[dim]);  // exact: dyadic
+    Box left = box, right = box;
+    left.hi[dim] = mid;
+    right.lo[dim] = mid;
+    ++left.depth[dim];
+    ++right.depth[dim];
+    stack.push_back(right);  // the earlier half is examined first
+    stack.push_back(left);
+  }
+  result.status = QueryStatus::Miss;
+  return result;
+}
+
+}  // namespace
+
+TriangleCcdResult triangle_ccd(PrimitivePair kind, const LinearQuery& q, const TriangleCcdOptions& options) {
+  return kind == PrimitivePair::VertexFace ? run<PrimitivePair::VertexFace>(q, options)
+                                           : run<PrimitivePair::EdgeEdge>(q, options);
+}
+
+}  // namespace ccd::cloth

@@ -1,0 +1,51 @@
+#pragma once
+// The conservative floating-point kernel for vertex-face and edge-edge CCD under linear
+// motion over t in [0, 1], with a minimum separation.
+//
+// Guarantee: never a false negative. If the primitives (closed sets; see linear_query.hpp)
+// come within `separation` of each other at some t in [0, 1], the result is Hit, and its
+// toi is <= the first such time. A Miss is a proof: every rounding error is bounded.
+//
+// Method (an inclusion test in the spirit of Tight-Inclusion, with a static error bound).
+// The difference between the two primitives' points, F(t, a, b) (vertex-face: vertex minus
+// the face point with barycentric (a, b); edge-edge: point a of edge A minus point b of
+// edge B), is multilinear in (t, a, b): over a box of parameters each component lies
+// between its smallest and largest corner value. Corner values are computed in doubles
+// with a proved error bound of 16 eps M (M the largest input magnitude, eps = 2^-52; the
+// derivation is in triangle_ccd.cpp). A box is proved contact-free when some component is
+// above separation + error on every corner, or below its negative. Boxes are split in
+// halves (parameters stay dyadic, so the corner parameters are exact), earliest time first.
+//
+// Hit is reported when a box's image is narrower than `tolerance` times the query's extent
+// (its largest coordinate range over the eight points)
+// (so a false positive is a near miss within about that distance), or when the budget of
+// boxes is spent. Vertex-face boxes wholly outside a + b <= 1 are dropped.
+//
+// Degenerate-case policy: degenerate triangles and edges are handled as closed convex
+// hulls (no special case is needed: the parametrisation covers them). Input that is not
+// finite, or larger than 1e300 in magnitude, returns Degenerate (callers treat it as a
+// possible contact).
+#include <cloth/ccd/linear_query.hpp>
+#include <ccd/queries/query_status.hpp>
+
+#include <cstdint>
+#include <limits>
+
+namespace ccd::cloth {
+
+struct TriangleCcdOptions {
+  double separation = 0.0;          ///< minimum separation, scene units, >= 0
+  double tolerance = 1e-9;          ///< image width reported as contact, relative to the query's extent
+  std::uint32_t max_boxes = 20000;  ///< budget of parameter boxes; spent = Hit (conservative)
+};
+
+struct TriangleCcdResult {
+  QueryStatus status = QueryStatus::Miss;  ///< Hit, Miss or Degenerate
+  double toi = std::numeric_limits<double>::infinity();  ///< Hit: a lower bound of the first contact time
+  std::uint32_t boxes = 0;                 ///< parameter boxes examined
+  bool budget_spent = false;               ///< Hit because max_boxes ran out
+};
+
+TriangleCcdResult triangle_ccd(PrimitivePair kind, const LinearQuery& q, const TriangleCcdOptions& options = {});
+
+}  // namespace ccd::cloth
