@@ -2,6 +2,9 @@
 #include <bounds/rounding.hpp>
 #include <bounds/wall_fold.hpp>
 
+#include <algorithm>
+#include <limits>
+
 namespace ccd {
 namespace {
 
@@ -12,14 +15,10 @@ double box_point_distance_squared(const Aabb& box, const Vec3& x) {
 
 }  // namespace
 
-void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
-  t0_ = ctx.t0;
+Aabb EnclosingSphereBound::build(const StepContext& ctx, std::size_t i) {
   const double h = ctx.t1 - ctx.t0;
   const double A = ctx.acceleration_bound;
-  const std::size_t n = ctx.start.size();
-  shapes_.resize(n);
-  boxes.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  {
     const BodyState& s = ctx.start[i];
     const double speed = s.velocity.norm();
     double c = h;
@@ -36,6 +35,7 @@ void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& bo
     sh.centre = centre;
     sh.radius = s.radius + rc;
     sh.boxed = false;
+    sh.ball = {s.position, ctx.t0, (speed + A * h) * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()), s.radius};
     sh.box = Aabb::around(centre, sh.radius);
     if (ctx.walls) {
       for (int k = 0; k < 3; ++k) {
@@ -49,11 +49,29 @@ void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& bo
         }
       }
     }
-    boxes[i] = sh.box;
+    return sh.box;
+  }
+}
+
+void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  const std::size_t n = ctx.start.size();
+  shapes_.resize(n);
+  boxes.resize(n);
+  for (std::size_t i = 0; i < n; ++i) boxes[i] = build(ctx, i);
+  windows_.assign(n, Window{ctx.t0, ctx.t1});
+}
+
+void EnclosingSphereBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies,
+                                   std::span<Aabb> boxes) {
+  for (const std::uint32_t i : bodies) {
+    boxes[i] = build(ctx, i);
+    windows_[i] = {ctx.t0, ctx.t1};
   }
 }
 
 PairTest EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b) const {
+  const Window w = common_window(windows_[a], windows_[b]);
+  if (w.t0 > w.t1) return PairTest::disjoint();
   const Shape& x = shapes_[a];
   const Shape& y = shapes_[b];
   bool hit;
@@ -67,7 +85,8 @@ PairTest EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b) const {
     const Shape& box = x.boxed ? x : y;
     hit = box_point_distance_squared(box.box, ball.centre) <= ball.radius * ball.radius;
   }
-  return hit ? PairTest::possible_from(t0_) : PairTest::disjoint();
+  if (!hit) return PairTest::disjoint();
+  return PairTest::possible_from(std::min(speed_earliest(x.ball, y.ball), w.t1));
 }
 
 }  // namespace ccd
