@@ -86,8 +86,9 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   options.window = dt;
   options.stale = method.scheduler.options.number("stale");
   options.align = method.scheduler.options.integer("align") != 0;
-  ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make(),
-                                   options);
+  options.refresh_bodies = method.scheduler.options.integer("refresh_bodies") != 0;
+  ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
+                                   method.broad_phase.make(), options);
   std::vector<ccd::ScheduledContact> contacts;
   ccd::StepTimes times;
   const auto t_start = Clock::now();

@@ -18,6 +18,7 @@ struct Event {
   Kind kind;
   std::uint32_t a, b;    // a pair (a < b), or the expiring body in a (b == a)
   std::uint32_t va, vb;  // the bodies' versions when the event was queued
+  double since;          // a check: when the bounds it came from start
 };
 
 // Min-heap order: earlier first; at equal times checks before expiries, then by bodies
@@ -45,16 +46,18 @@ struct Watch {
 
 }  // namespace
 
-EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, Knowledge knowledge,
-                                     std::unique_ptr<BroadPhase> broad, ScheduleOptions options,
-                                     const NarrowTable& table)
+EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_ptr<Bound> scratch,
+                                     Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
+                                     ScheduleOptions options, const NarrowTable& table)
     : bound_(std::move(bound)),
+      scratch_(std::move(scratch)),
       knowledge_(knowledge),
       broad_(std::move(broad)),
       options_(options),
       narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)) {
   if (knowledge == Knowledge::Instant)
     throw std::invalid_argument("the earliest scheduler needs a space-time bound (an instant bound has no window)");
+  if (!bound_ || !scratch_) throw std::invalid_argument("the earliest scheduler needs two bound instances");
   if (!(options.window > 0.0)) throw std::invalid_argument("the earliest scheduler needs a window dt > 0");
   if (!(options.stale > 0.0 && options.stale <= 1.0))
     throw std::invalid_argument("the earliest scheduler needs stale in (0, 1]");
@@ -69,12 +72,14 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   const double dt = options_.window;
   const double T = horizon;
   const double stale_age = options_.stale * dt;
+  const bool refine = options_.stale < 1.0;  // 1: never (a window may exceed dt by rounding)
   StepTimes local;
   Watch watch{times != nullptr};
 
   std::vector<BodyState> states(n);
   std::vector<std::uint32_t> version(n, 0);
-  std::vector<Aabb> boxes;
+  std::vector<Aabb> boxes, scratch_boxes;
+  std::uint32_t pair_bodies[2];
   std::vector<BodyPair> pairs;
   std::vector<std::uint32_t> batch;
   std::priority_queue<Event, std::vector<Event>, Later> queue;
@@ -94,11 +99,12 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const PairTest r = bound_->test(p.a, p.b);
       if (!r.possible()) continue;
       ++stats_.passed;
-      queue.push({std::max(r.earliest, now), Kind::Check, p.a, p.b, version[p.a], version[p.b]});
+      const double since = std::max(bound_->window(p.a).t0, bound_->window(p.b).t0);
+      queue.push({std::max(r.earliest, now), Kind::Check, p.a, p.b, version[p.a], version[p.b], since});
     }
   };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
-    if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i]});
+    if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
   };
   // Refreshes the bodies of `batch` at time t over [t, min(t + dt, T)].
   const auto refresh = [&](double t) {
@@ -140,6 +146,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     ctx.t1 = std::min(dt, T);
     ctx.start = states;
     bound_->prepare(ctx, boxes);
+    if (!options_.refresh_bodies) scratch_->prepare(ctx, scratch_boxes);
     watch.stop(local.bound);
     stats_.refreshes += n;
     ++stats_.batches;
@@ -176,15 +183,37 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     if (version[e.a] != e.va || version[e.b] != e.vb) continue;  // queued from an older bound
     const Window wa = bound_->window(e.a);
     const Window wb = bound_->window(e.b);
-    batch.clear();
-    if (e.t - wa.t0 > stale_age) batch.push_back(e.a);
-    if (e.t - wb.t0 > stale_age) batch.push_back(e.b);
-    if (!batch.empty()) {
-      refresh(e.t);
+    const double to = std::min(wa.t1, wb.t1);
+    if (options_.refresh_bodies) {
+      batch.clear();
+      if (refine && e.t - wa.t0 > stale_age) batch.push_back(e.a);
+      if (refine && e.t - wb.t0 > stale_age) batch.push_back(e.b);
+      if (!batch.empty()) {
+        refresh(e.t);
+        continue;
+      }
+    } else if (refine && e.t - e.since > stale_age) {
+      // The pair's own bounds from now to the end of the common window.
+      watch.start();
+      pair_bodies[0] = e.a;
+      pair_bodies[1] = e.b;
+      state_at(e.a, e.t);
+      state_at(e.b, e.t);
+      ctx.t0 = e.t;
+      ctx.t1 = to;
+      ctx.start = states;
+      scratch_->refresh(ctx, pair_bodies, scratch_boxes);
+      stats_.refreshes += 2;
+      ++stats_.pair_checks;
+      const PairTest r = scratch_->test(e.a, e.b);
+      watch.stop(local.bound);
+      if (r.possible()) {
+        ++stats_.passed;
+        queue.push({std::max(r.earliest, e.t), Kind::Check, e.a, e.b, e.va, e.vb, e.t});
+      }
       continue;
     }
     ++stats_.narrow_calls;
-    const double to = std::min(wa.t1, wb.t1);
     const NarrowInput in{&motion, states, {}, e.t, to, false};
     watch.start();
     const ContactResult c = narrow_(in, e.a, e.b);

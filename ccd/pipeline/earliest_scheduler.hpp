@@ -13,17 +13,22 @@
 //    their next windows, the broad phase updates only those (BroadPhase::update), and
 //    every pair it reports is tested (Bound::test over the common part of both windows);
 //    a pair that may touch gets a check at its `earliest`;
-//  - check of pair (a, b) at t: when a body's bound is older than `stale` x dt (w0 < t -
-//    stale dt), that body refreshes at t (Hubbard's refinement: a fresh bound is tight
-//    near t), which re-tests the pair; otherwise the narrow phase runs from t to the end
-//    of the common window. Every refresh bumps the body's version, so queued checks made
-//    from its old bound are dropped when they come up.
+//  - check of pair (a, b) at t: when the bounds the check came from are older than
+//    `stale` x dt, they are first rebuilt at t (Hubbard's refinement: a fresh bound is
+//    tight near t) and the pair re-tested, which gives a later check or none; otherwise
+//    the narrow phase runs from t to the end of the common window. The refinement builds
+//    the pair's own bounds from t to the end of the common window in a second instance of
+//    the bound (default: nothing else changes), or, with `refresh_bodies`, refreshes the
+//    two bodies' bounds themselves (their windows then start at t, every pair of theirs is
+//    re-tested, and windows of different bodies differ). Every refresh of a body bumps its
+//    version, so queued checks made from its old bound are dropped when they come up.
 // Coverage (why nothing is missed while the bound's assumption holds): each pair's time is
 // tiled by the common windows of its bodies' bounds; each common window is examined when
 // its later-starting bound is built (broad phase, then pair test), no contact is possible
 // in it before the test's `earliest`, and from there the narrow phase covers the rest of
-// it, or a refresh starts a new common window at the check time. A refinement advances a
-// window's start by at least stale x dt, so a pair is refined at most T / (stale dt) times.
+// it, or a refinement covers the rest of it from the check time on. A refinement advances
+// the age of the pair's bounds by at least stale x dt, so a pair is refined at most
+// T / (stale dt) times.
 // Contacts are reported with the narrow call's interval [from, to]: the runner credits
 // the events of the pair that start in it (as a fixed step credits the events that start
 // in the step).
@@ -47,6 +52,9 @@ struct ScheduleOptions {
   /// refined at different times still expire together and the broad phase updates them
   /// in one batch); false: at t + dt (every body on its own clock).
   bool align = true;
+  /// false: a refinement builds the pair's own bounds (a second bound instance); true: it
+  /// refreshes the two bodies' bounds, with a broad-phase update and a re-test of their pairs.
+  bool refresh_bodies = false;
 };
 
 struct ScheduledContact {
@@ -60,16 +68,20 @@ struct ScheduleStats {
   std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls)
   std::uint64_t passed = 0;        ///< of those, Possible
   std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
-  std::uint64_t refreshes = 0;     ///< body bounds built, the first one of every body included
+  std::uint64_t refreshes = 0;     ///< body bounds built (the first one of every body and the
+                                   ///< pair refinements' included)
   std::uint64_t candidates = 0;    ///< pairs the broad phase reported, summed over updates
   std::uint64_t batches = 0;       ///< distinct refresh events (times at which bounds were rebuilt)
 };
 
 class EarliestScheduler {
  public:
-  /// `knowledge` is the bound's; an Instant bound has no window (std::invalid_argument).
-  EarliestScheduler(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
-                    ScheduleOptions options, const NarrowTable& table = narrow_table());
+  /// `bound` and `scratch` are two instances of the same bound (`scratch` holds the pairs'
+  /// refined bounds); `knowledge` is theirs; an Instant bound has no window
+  /// (std::invalid_argument).
+  EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_ptr<Bound> scratch, Knowledge knowledge,
+                    std::unique_ptr<BroadPhase> broad, ScheduleOptions options,
+                    const NarrowTable& table = narrow_table());
 
   /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
   /// order the checks ran. Adds stage times to `*times` when given. Stops early (returns
@@ -83,6 +95,7 @@ class EarliestScheduler {
 
  private:
   std::unique_ptr<Bound> bound_;
+  std::unique_ptr<Bound> scratch_;
   Knowledge knowledge_;
   std::unique_ptr<BroadPhase> broad_;
   ScheduleOptions options_;

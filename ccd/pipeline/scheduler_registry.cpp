@@ -13,11 +13,15 @@ constexpr ParameterSpec kFixedParameters[] = {
 };
 constexpr ParameterSpec kEarliestParameters[] = {
     {"stale", 0.25,
-     "a due pair check first refreshes each body whose bound is older than stale x dt (Hubbard's "
-     "refinement); 1: never, the narrow phase runs at once",
+     "a due pair check whose bounds are older than stale x dt first rebuilds them at the check time "
+     "(Hubbard's refinement); 1: never, the narrow phase runs at once",
      ParameterKind::Real, {0.0, 1.0, true, false}},
     {"align", 1.0,
      "1: a refreshed window ends at the next multiple of dt, so bodies expire together; 0: at its start + dt",
+     ParameterKind::Integer, {0.0, 1.0}},
+    {"refresh_bodies", 0.0,
+     "0: a refinement builds the pair's own bounds; 1: it refreshes both bodies' bounds (broad-phase update, "
+     "every pair of theirs re-tested)",
      ParameterKind::Integer, {0.0, 1.0}},
 };
 

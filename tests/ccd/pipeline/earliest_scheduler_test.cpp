@@ -21,13 +21,14 @@ using ccd::Vec3;
 namespace {
 
 ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
-                            bool align = true) {
+                            bool align = true, bool refresh_bodies = false) {
   const ccd::BoundSpec b = ccd::parse_bound(bound);
   ccd::ScheduleOptions o;
   o.window = dt;
   o.stale = stale;
   o.align = align;
-  return ccd::EarliestScheduler(b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
+  o.refresh_bodies = refresh_bodies;
+  return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
 }
 
 // Events (enter > 0) with no contact of their pair whose narrow interval contains enter.
@@ -62,10 +63,11 @@ TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipe
   const double A = scene.max_acceleration();
   for (const char* bound : {"horn:4", "capsule", "horn_sat:3", "swept_aabb", "enclosing_sphere"}) {
     for (const double stale : {0.01, 0.25, 1.0}) {
-      for (const bool align : {true, false}) {
+      for (const int mode : {0, 1, 2}) {  // pair refinement; body refreshes aligned; on own clocks
+        const bool align = mode != 2, refresh_bodies = mode != 0;
         for (const double dt : {0.05, 0.3}) {  // 0.3 does not divide the horizon
-          INFO(s.generator << " " << bound << " stale " << stale << " align " << align << " dt " << dt);
-          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align);
+          INFO(s.generator << " " << bound << " stale " << stale << " mode " << mode << " dt " << dt);
+          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align, refresh_bodies);
           std::vector<ccd::ScheduledContact> contacts;
           REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
           CHECK(undetected(events, contacts, 1e-9 * scene.horizon) == 0);
@@ -100,8 +102,9 @@ TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipel
   s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 1000, 0)));
   const ccd::Trajectories traj(s);
   for (const char* bound : {"horn:4", "capsule"}) {
-    INFO(bound);
-    ccd::EarliestScheduler sched = make(bound, "brute", 1.0);
+   for (const bool refresh_bodies : {false, true}) {
+    INFO(bound << " refresh_bodies " << refresh_bodies);
+    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.25, true, refresh_bodies);
     std::vector<ccd::ScheduledContact> contacts;
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     REQUIRE(contacts.size() == 1);
@@ -113,8 +116,10 @@ TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipel
     CHECK(contacts[0].from <= 0.75);
     // The far bodies were never paired: only (0, 1) was tested (at the start and after
     // each refinement).
-    CHECK(sched.stats().candidates == sched.stats().pair_checks);
     CHECK(sched.stats().pair_checks <= 4);
+    if (refresh_bodies) CHECK(sched.stats().candidates == sched.stats().pair_checks);
+    else CHECK(sched.stats().candidates == 1);  // refinements re-test the pair alone
+   }
   }
 }
 
@@ -127,13 +132,15 @@ TEST_CASE("the refinement terminates on a grazing pair", "[pipeline][scheduler]"
   s.bodies.push_back(ccd::test::body(0.5, Vec3(1, 1, 0), Vec3(-2, 0, 0)));
   const ccd::Trajectories traj(s);
   for (const char* bound : {"horn:4", "horn_sat:4", "capsule", "swept_aabb", "enclosing_sphere"}) {
-    INFO(bound);
-    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.01);
+   for (const bool refresh_bodies : {false, true}) {
+    INFO(bound << " refresh_bodies " << refresh_bodies);
+    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.01, true, refresh_bodies);
     std::vector<ccd::ScheduledContact> contacts;
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     REQUIRE(contacts.size() == 1);
     CHECK(contacts[0].contact.toi == Approx(0.5).margin(1e-7));
     CHECK(sched.stats().refreshes <= 2 + 2 * 100);  // at most 1 / stale refinements per body
+   }
   }
 }
 
@@ -141,10 +148,12 @@ TEST_CASE("the earliest scheduler refuses what it cannot run", "[pipeline][sched
   const ccd::BoundSpec sphere = ccd::parse_bound("sphere");
   ccd::ScheduleOptions o;
   o.window = 0.1;
-  CHECK_THROWS_AS(ccd::EarliestScheduler(sphere.make(), sphere.info->knowledge, ccd::parse_broad_phase("grid").make(), o),
+  CHECK_THROWS_AS(ccd::EarliestScheduler(sphere.make(), sphere.make(), sphere.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
   const ccd::BoundSpec capsule = ccd::parse_bound("capsule");
   o.window = 0.0;
-  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.info->knowledge, ccd::parse_broad_phase("grid").make(), o),
+  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
 }
