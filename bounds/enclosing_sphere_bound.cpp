@@ -18,39 +18,37 @@ double box_point_distance_squared(const Aabb& box, const Vec3& x) {
 Aabb EnclosingSphereBound::build(const StepContext& ctx, std::size_t i) {
   const double h = ctx.t1 - ctx.t0;
   const double A = ctx.acceleration_bound;
-  {
-    const BodyState& s = ctx.start[i];
-    const double speed = s.velocity.norm();
-    double c = h;
-    double rc = 0.5 * A * h * h;  // radius of the centre region
-    if (A * h < 2.0 * speed) {
-      c = 0.5 * h + A * h * h / (4.0 * speed);
-      rc = 0.5 * speed * h + 0.25 * A * h * h;
-    }
-    const Vec3 centre = s.position + s.velocity * c;
-    const double slack =
-        rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius + s.velocity.cwiseAbs().maxCoeff() * h + A * h * h);
-    rc += slack;
-    Shape& sh = shapes_[i];
-    sh.centre = centre;
-    sh.radius = s.radius + rc;
-    sh.boxed = false;
-    sh.ball = {s.position, ctx.t0, (speed + A * h) * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()), s.radius};
-    sh.box = Aabb::around(centre, sh.radius);
-    if (ctx.walls) {
-      for (int k = 0; k < 3; ++k) {
-        const double L = ctx.walls->min[k] + s.radius;
-        const double H = ctx.walls->max[k] - s.radius;
-        if (L <= H && (centre[k] - rc < L || centre[k] + rc > H)) {
-          const Interval f = fold_interval(centre[k] - rc, centre[k] + rc, L, H);
-          sh.box.lo[k] = f.lo - s.radius - slack;
-          sh.box.hi[k] = f.hi + s.radius + slack;
-          sh.boxed = true;
-        }
+  const BodyState& s = ctx.start[i];
+  const double speed = s.velocity.norm();
+  double c = h;
+  double rc = 0.5 * A * h * h;  // radius of the centre region
+  if (A * h < 2.0 * speed) {
+    c = 0.5 * h + A * h * h / (4.0 * speed);
+    rc = 0.5 * speed * h + 0.25 * A * h * h;
+  }
+  const Vec3 centre = s.position + s.velocity * c;
+  const double slack =
+      rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius + s.velocity.cwiseAbs().maxCoeff() * h + A * h * h);
+  rc += slack;
+  Shape& sh = shapes_[i];
+  sh.centre = centre;
+  sh.radius = s.radius + rc;
+  sh.boxed = false;
+  sh.ball = {s.position, ctx.t0, (speed + A * h) * (1.0 + 8.0 * std::numeric_limits<double>::epsilon()), s.radius};
+  sh.box = Aabb::around(centre, sh.radius);
+  if (ctx.walls) {
+    for (int k = 0; k < 3; ++k) {
+      const double L = ctx.walls->min[k] + s.radius;
+      const double H = ctx.walls->max[k] - s.radius;
+      if (L <= H && (centre[k] - rc < L || centre[k] + rc > H)) {
+        const Interval f = fold_interval(centre[k] - rc, centre[k] + rc, L, H);
+        sh.box.lo[k] = f.lo - s.radius - slack;
+        sh.box.hi[k] = f.hi + s.radius + slack;
+        sh.boxed = true;
       }
     }
-    return sh.box;
   }
+  return sh.box;
 }
 
 void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {

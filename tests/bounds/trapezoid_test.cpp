@@ -229,9 +229,7 @@ TEST_CASE("trapezoid_sequence_overlap agrees with dense sampling over different 
       if (j > 0) {  // contiguous: starts where the previous piece ends
         z.lo0 = out.back().lo1;
         z.hi0 = out.back().hi1;
-        z.lo0 = z.lo0.cwiseMin(z.hi0);
       }
-      z.hi1 = z.hi1.cwiseMax(z.lo1);
       out.push_back(z);
     }
   };
