@@ -89,8 +89,9 @@ class Bound {
   /// For a scheduler (ccd/pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
   /// only, over the window [ctx.t0, ctx.t1], from ctx.start (indexed by body; only the
   /// listed entries are read) and writes their boxes into boxes[body]; every other body
-  /// keeps its window and data. Needs a `prepare` first. Instant bounds have no window:
-  /// the default throws std::logic_error.
+  /// keeps its window and data. Without a `prepare` first, only the refreshed bodies
+  /// hold a bound (a scheduler's scratch instance for single pairs). Instant bounds have
+  /// no window: the default throws std::logic_error.
   virtual void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes);
   /// The window body `body` covers since its last prepare or refresh.
   virtual Window window(std::uint32_t body) const = 0;

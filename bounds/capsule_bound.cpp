@@ -59,6 +59,10 @@ void CapsuleBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
 
 void CapsuleBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
   if (!ctx.exact) throw std::invalid_argument("capsule needs the exact trajectories (StepContext::exact)");
+  if (capsules_.size() != ctx.exact->size()) {  // no prepare before: room for every body
+    capsules_.resize(ctx.exact->size());
+    windows_.resize(ctx.exact->size());
+  }
   for (const std::uint32_t i : bodies) {
     boxes[i] = build(ctx, i);
     windows_[i] = {ctx.t0, ctx.t1};

@@ -61,6 +61,10 @@ void EnclosingSphereBound::prepare(const StepContext& ctx, std::vector<Aabb>& bo
 
 void EnclosingSphereBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies,
                                    std::span<Aabb> boxes) {
+  if (shapes_.size() != ctx.start.size()) {  // no prepare before: room for every body
+    shapes_.resize(ctx.start.size());
+    windows_.resize(ctx.start.size());
+  }
   for (const std::uint32_t i : bodies) {
     boxes[i] = build(ctx, i);
     windows_[i] = {ctx.t0, ctx.t1};

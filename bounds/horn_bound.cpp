@@ -24,6 +24,7 @@ void HornBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
 }
 
 void HornBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
+  if (traps_.size() != ctx.start.size() * m_) traps_.resize(ctx.start.size() * m_);  // no prepare before
   for (const std::uint32_t i : bodies) boxes[i] = build(ctx, i);
 }
 

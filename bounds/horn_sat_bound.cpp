@@ -81,6 +81,13 @@ void HornSatBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
 }
 
 void HornSatBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
+  const std::size_t n = ctx.start.size();
+  if (frames_.size() != n) {  // no prepare before: room for every body
+    frames_.resize(n);
+    ends_.resize(n * m_);
+    scratch_.resize(m_);
+    times_.resize(n * (m_ + 1));
+  }
   for (const std::uint32_t i : bodies) boxes[i] = build(ctx, i);
 }
 

@@ -28,6 +28,11 @@ void SweptAabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
 
 void SweptAabbBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
   if (!ctx.exact) throw std::invalid_argument("swept_aabb needs the exact trajectories (StepContext::exact)");
+  if (boxes_.size() != ctx.exact->size()) {  // no prepare before: room for every body
+    boxes_.resize(ctx.exact->size());
+    windows_.resize(ctx.exact->size());
+    balls_.resize(ctx.exact->size());
+  }
   for (const std::uint32_t i : bodies) {
     boxes_[i] = boxes[i] = build(ctx, i);
     windows_[i] = {ctx.t0, ctx.t1};

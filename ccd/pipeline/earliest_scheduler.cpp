@@ -78,7 +78,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
 
   std::vector<BodyState> states(n);
   std::vector<std::uint32_t> version(n, 0);
-  std::vector<Aabb> boxes, scratch_boxes;
+  std::vector<Aabb> boxes, scratch_boxes(n);  // the scratch instance holds refined pairs only
   std::uint32_t pair_bodies[2];
   std::vector<BodyPair> pairs;
   std::vector<std::uint32_t> batch;
@@ -146,7 +146,6 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     ctx.t1 = std::min(dt, T);
     ctx.start = states;
     bound_->prepare(ctx, boxes);
-    if (!options_.refresh_bodies) scratch_->prepare(ctx, scratch_boxes);
     watch.stop(local.bound);
     stats_.refreshes += n;
     ++stats_.batches;

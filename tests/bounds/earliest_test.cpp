@@ -139,11 +139,20 @@ TEST_CASE("bounds over different windows compare correctly", "[bounds][earliest]
       // Two refreshed bodies: exactly what a prepare over the later window gives.
       auto fresh = spec.make();
       fresh->prepare(ctx, fresh_boxes);
+      // ... and what an instance never prepared gives after refreshing the pair alone (the
+      // scheduler's scratch instance).
+      auto scratch = spec.make();
+      std::vector<ccd::Aabb> scratch_boxes(st.traj.size());
       for (std::size_t x = 0; x + 1 < moved.size(); x += 7) {
         const ccd::PairTest r = bound->test(moved[x], moved[x + 1]);
         const ccd::PairTest f = fresh->test(moved[x], moved[x + 1]);
         CHECK(r.status == f.status);
         if (r.possible()) CHECK(r.earliest == f.earliest);
+        const std::uint32_t pair[2] = {moved[x], moved[x + 1]};
+        scratch->refresh(ctx, pair, scratch_boxes);
+        const ccd::PairTest g = scratch->test(pair[0], pair[1]);
+        CHECK(g.status == f.status);
+        if (g.possible()) CHECK(g.earliest == f.earliest);
         CHECK(boxes[moved[x]].lo == fresh_boxes[moved[x]].lo);
         CHECK(boxes[moved[x]].hi == fresh_boxes[moved[x]].hi);
       }
