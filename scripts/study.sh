@@ -78,6 +78,12 @@ if [[ $publish == 1 ]]; then
     cp "$p" "$root/docs/studies/"
     echo "published docs/studies/$(basename "$p")"
   done
+  if [[ $name == scheduling ]]; then
+    for f in sparse-gas bullets; do
+      cp "$out/scheduling-$f-plots/speed_accuracy.png" "$root/docs/studies/scheduling-$f-speed-accuracy.png"
+      echo "published docs/studies/scheduling-$f-speed-accuracy.png"
+    done
+  fi
   if [[ $name == tunnelling ]]; then
     cp "$out/tunnelling-plots/missed.png" "$root/docs/studies/tunnelling-missed.png"
     echo "published docs/studies/tunnelling-missed.png"
