@@ -1,4 +1,5 @@
 #include <bounds/aabb_bound.hpp>
+#include <ccd/util/nearest_name.hpp>
 #include <bounds/capsule_bound.hpp>
 #include <bounds/enclosing_sphere_bound.hpp>
 #include <bounds/horn_bound.hpp>
@@ -83,9 +84,14 @@ BoundSpec parse_bound(std::string_view spec) {
   const BoundInfo* info = nullptr;
   for (const BoundInfo& b : kBounds)
     if (b.name == name) info = &b;
-  if (!info)
-    throw std::invalid_argument("unknown bound '" + std::string(name) + "' in '" + std::string(spec) +
-                                "'; valid bounds: " + valid_names());
+  if (!info) {
+    std::vector<std::string_view> names;
+    for (const BoundInfo& b : kBounds) names.push_back(b.name);
+    const std::string near = nearest_name(name, names);
+    throw std::invalid_argument("unknown bound '" + std::string(name) + "' in '" + std::string(spec) + "'" +
+                                (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
+                                "; valid bounds: " + valid_names());
+  }
   if (colon == std::string_view::npos) return {info, resolve_parameters(info->parameters, {})};
   try {
     const std::string_view first = info->parameters.empty() ? std::string_view() : info->parameters[0].name;

@@ -1,6 +1,7 @@
 #include "experiment.hpp"
 
 #include "method.hpp"
+#include "generators/registry.hpp"
 
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
@@ -25,22 +26,25 @@ double positive_number(const JsonReader& r, const json& v, const std::string& fi
   return x;
 }
 
-std::vector<double> parse_dt(const JsonReader& r, const json& j) {
-  std::vector<double> dt;
+// A list of positive numbers, or {"from", "to", "count", "spacing"} (field: "dt" or "hz").
+std::vector<double> parse_values(const JsonReader& r, const json& j, const std::string& field) {
+  std::vector<double> values;
   if (j.is_array()) {
-    if (j.empty()) r.fail("dt", "must not be empty");
-    for (std::size_t i = 0; i < j.size(); ++i) dt.push_back(positive_number(r, j[i], "dt[" + std::to_string(i) + "]"));
+    if (j.empty()) r.fail(field, "must not be empty");
+    for (std::size_t i = 0; i < j.size(); ++i)
+      values.push_back(positive_number(r, j[i], field + "[" + std::to_string(i) + "]"));
   } else if (j.is_object()) {
-    const double from = positive_number(r, r.require(j, "from", "dt"), "dt.from");
-    const double to = positive_number(r, r.require(j, "to", "dt"), "dt.to");
-    const auto count = static_cast<int>(r.integer(r.require(j, "count", "dt"), "dt.count", 1, 100000));
+    r.only_fields(j, field, {"from", "to", "count", "spacing"});
+    const double from = positive_number(r, r.require(j, "from", field), field + ".from");
+    const double to = positive_number(r, r.require(j, "to", field), field + ".to");
+    const auto count = static_cast<int>(r.integer(r.require(j, "count", field), field + ".count", 1, 100000));
     std::string spacing = "log";
     if (j.contains("spacing")) {
-      spacing = r.string(j["spacing"], "dt.spacing");
-      if (spacing != "log" && spacing != "linear") r.fail("dt.spacing", "must be \"log\" or \"linear\"");
+      spacing = r.string(j["spacing"], field + ".spacing");
+      if (spacing != "log" && spacing != "linear") r.fail(field + ".spacing", "must be \"log\" or \"linear\"");
     }
     if (count == 1) {
-      dt.push_back(from);
+      values.push_back(from);
     } else {
       for (int i = 0; i < count; ++i) {
         const double f = double(i) / double(count - 1);
@@ -48,15 +52,40 @@ std::vector<double> parse_dt(const JsonReader& r, const json& j) {
                                     : from + f * (to - from);
         if (i == 0) x = from;
         if (i == count - 1) x = to;  // endpoints exactly as written
-        dt.push_back(x);
+        values.push_back(x);
       }
     }
   } else {
-    r.fail("dt", "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
+    r.fail(field, "must be an array of numbers or {\"from\", \"to\", \"count\", \"spacing\"}");
   }
-  std::sort(dt.begin(), dt.end(), std::greater<>());
-  dt.erase(std::unique(dt.begin(), dt.end()), dt.end());
-  return dt;
+  return values;
+}
+
+// The timesteps of "dt" (seconds) and "hz" (frequencies, dt = 1 / hz), sorted by dt
+// descending, each dt once; a dt given both ways keeps its frequency as written.
+void parse_timesteps(const JsonReader& r, const json& j, Experiment& e) {
+  struct Step {
+    double dt, hz;
+    bool from_hz;
+  };
+  std::vector<Step> steps;
+  if (j.contains("dt"))
+    for (double dt : parse_values(r, j["dt"], "dt")) steps.push_back({dt, 1.0 / dt, false});
+  if (j.contains("hz"))
+    for (double hz : parse_values(r, j["hz"], "hz")) {
+      if (!(1.0 / hz > 0.0)) r.fail("hz", "frequency " + json(hz).dump() + " is too high (1 / hz is 0)");
+      steps.push_back({1.0 / hz, hz, true});
+    }
+  if (steps.empty()) r.fail("dt", "missing required field (or give frequencies as \"hz\")");
+  std::stable_sort(steps.begin(), steps.end(), [](const Step& x, const Step& y) {
+    return x.dt != y.dt ? x.dt > y.dt : x.from_hz > y.from_hz;
+  });
+  for (const Step& s : steps) {
+    if (!e.dt.empty() && e.dt.back() == s.dt) continue;  // the first of equal dts: from hz if any
+    e.dt.push_back(s.dt);
+    e.hz.push_back(s.hz);
+    e.hz_given.push_back(s.from_hz);
+  }
 }
 
 }  // namespace
@@ -66,6 +95,8 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
   if (!j.is_object()) r.fail("", "an experiment must be a JSON object");
   if (r.string(r.require(j, "format", ""), "format") != "ccdlab-experiment/1")
     r.fail("format", "must be \"ccdlab-experiment/1\"");
+  r.only_fields(j, "", {"format", "name", "description", "scene", "dt", "hz", "methods", "acceleration_bound",
+                        "repeats", "list_missed"});
   Experiment e;
   if (j.contains("name")) {
     e.name = r.string(j["name"], "name");
@@ -91,11 +122,21 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
   } else if (scene.is_object()) {
     if (!scene.contains("generator") || !scene["generator"].is_string())
       r.fail("scene.generator", "missing required field (a generator name)");
+    const Generator* gen = nullptr;
+    try {
+      gen = &generator_named(scene["generator"].get<std::string>());
+    } catch (const std::invalid_argument& err) {
+      r.fail("scene.generator", err.what());
+    }
+    std::vector<std::string_view> known{"generator"};
+    for (const ParameterSpec& p : gen->parameters) known.push_back(p.name);
+    r.only_fields(scene, "scene", known);
     e.scene_generator = scene;
+    e.scene_generator.erase("comment");
   } else {
     r.fail("scene", "must be a scene file path or {\"generator\": NAME, ...}");
   }
-  e.dt = parse_dt(r, r.require(j, "dt", ""));
+  parse_timesteps(r, j, e);
   const json& methods = r.require(j, "methods", "");
   if (!methods.is_array() || methods.empty()) r.fail("methods", "must be a non-empty array of method names");
   std::vector<json> identities;  // each method resolved, parallel to e.methods
@@ -127,6 +168,8 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
       r.fail("acceleration_bound", "must be a number in [0, 1e+30]");
   }
   if (j.contains("repeats")) e.repeats = static_cast<int>(r.integer(j["repeats"], "repeats", 1, 1000));
+  if (j.contains("description")) r.string(j["description"], "description");
+  e.list_missed = r.optional_bool(j, "list_missed", "", false);
   e.source = j;
   return e;
 }
@@ -178,6 +221,11 @@ json experiment_to_json(const Experiment& e) {
   j["name"] = e.name;
   if (!e.scene_path.empty()) j["scene"] = e.scene_path; else j["scene"] = e.scene_generator;
   j["dt"] = e.dt;
+  json hz = json::array();
+  for (std::size_t i = 0; i < e.dt.size(); ++i)
+    if (e.hz_given[i]) hz.push_back(e.hz[i]);
+  if (hz.empty()) j.erase("hz"); else j["hz"] = hz;
+  j["list_missed"] = e.list_missed;
   j["methods"] = e.methods;
   j["acceleration_bound"] = e.acceleration_bound < 0 ? json(nullptr) : json(e.acceleration_bound);
   j["repeats"] = e.repeats;

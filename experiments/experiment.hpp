@@ -16,13 +16,17 @@ struct Experiment {
   /// ... or a generator spec {"generator": NAME, params...} (scene_path empty).
   nlohmann::json scene_generator;
   std::vector<double> dt;             ///< sorted descending, unique, each in (0, horizon]
+  std::vector<double> hz;             ///< parallel to dt: the frequency as given in "hz", else 1 / dt
+  std::vector<bool> hz_given;         ///< parallel to dt: the timestep came from "hz"
   std::vector<std::string> methods;   ///< BOUND/BROADPHASE, validated against the registries
   double acceleration_bound = -1.0;   ///< A for Bounded bounds; < 0: the scene's largest
   int repeats = 1;                    ///< timing repeats (counts must not change)
+  bool list_missed = false;           ///< records list their missed events (missed_events)
   nlohmann::json source;              ///< the parsed file with defaults filled in
 };
 
-/// Parses and validates an experiment (methods, dt > 0, repeats >= 1, ...); throws
+/// Parses and validates an experiment (methods, dt > 0, repeats >= 1, no unknown field,
+/// ...); throws
 /// ccd::InputError naming `file` and the field. The dt <= horizon check needs the scene:
 /// see check_dt_against_horizon.
 Experiment experiment_from_json(const nlohmann::json& j, const std::string& file);

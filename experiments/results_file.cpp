@@ -42,8 +42,10 @@ void check_like(const json& schema, const json& v, const Reader& r, const std::s
 // the form experiment_to_json writes.
 Experiment stored_experiment(const json& j, const Reader& r) {
   Experiment e;
+  json given = j;
+  given.erase("acceleration_bound_used");  // added by ccdlab run beside the experiment's fields
   try {
-    e = experiment_from_json(j, r.file);
+    e = experiment_from_json(given, r.file);
   } catch (const ccd::InputError& err) {
     const std::string prefix = r.file + ": " + (err.field().empty() ? std::string() : err.field() + ": ");
     const std::string what = std::string(err.what()).substr(prefix.size());

@@ -96,13 +96,14 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
     std::size_t index;
     MethodSpec method;
     double dt;
+    double hz;
   };
   std::vector<Job> jobs;
   const std::size_t total_jobs = e.methods.size() * e.dt.size();
   for (std::size_t m = 0; m < e.methods.size(); ++m)
     for (std::size_t d = 0; d < e.dt.size(); ++d) {
       const std::size_t index = m * e.dt.size() + d;
-      if (options.shard.owns(index)) jobs.push_back({index, parse_method(e.methods[m]), e.dt[d]});
+      if (options.shard.owns(index)) jobs.push_back({index, parse_method(e.methods[m]), e.dt[d], e.hz[d]});
     }
 
   Progress progress(jobs.size(), options.quiet);
@@ -113,6 +114,9 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
   topts.threads = options.threads;
+  topts.progress = [&progress](std::size_t done, std::size_t total) {
+    progress.advance("candidate pairs solved", done, total);
+  };
   const TruthIndex truth(options.truth ? options.truth->events : ccd::compute_truth(traj, topts));
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
@@ -131,14 +135,17 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
   in.repeats = e.repeats;
   in.cancel = options.cancel;
+  in.list_missed = e.list_missed;
 
   std::vector<RunRecord> records(jobs.size());
+  progress.start_jobs();
   ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {
     if (options.cancel && options.cancel->load()) {
       records[i].cancelled = true;
       return;
     }
     records[i] = run_method(in, jobs[i].method, jobs[i].dt);
+    records[i].hz = jobs[i].hz;
     progress.done(job_label(jobs[i].method.name, jobs[i].dt));
   });
   progress.finish();
@@ -161,7 +168,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    json r = to_json(records[i]);
+    json r = to_json(records[i], e.list_missed);
     r["job"] = jobs[i].index;
     recs.push_back(std::move(r));
   }

@@ -202,9 +202,12 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.options = options_json(method);
   r.knowledge = std::string(ccd::to_string(method.bound.info->knowledge));
   r.continuous = method.continuous();
-  r.conservative = method.bound.info->conservative;
+  r.conservative = method.continuous() && method.bound.info->conservative &&
+                   (method.bound.info->knowledge != ccd::Knowledge::Bounded ||
+                    in.acceleration_bound >= in.scene->max_acceleration());
   r.scheduled = method.scheduled();
   r.dt = dt;
+  r.hz = 1.0 / dt;
 
   std::vector<Counts> runs;
   for (int i = 0; i < std::max(1, in.repeats); ++i) {
@@ -237,6 +240,8 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
       ++r.initial_contacts;
       continue;
     }
+    if (std::isnan(c.lag[e]) && in.list_missed)
+      r.missed_events.push_back({events[e].a, events[e].b, events[e].enter, events[e].exit});
     if (!std::isnan(c.lag[e])) {
       ++r.detected;
       lag_sum += c.lag[e];
@@ -251,6 +256,9 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
     }
   }
   r.missed = r.events - r.initial_contacts - r.detected;
+  std::sort(r.missed_events.begin(), r.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
+    return x.enter != y.enter ? x.enter < y.enter : x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
   if (r.detected > 0) {
     r.mean_lag = lag_sum / double(r.detected);
     r.mean_penetration = pen_sum / double(r.detected);
@@ -289,7 +297,7 @@ nlohmann::json counters_json(const std::vector<std::pair<std::string, std::uint6
 
 }  // namespace
 
-nlohmann::json to_json(const RunRecord& r) {
+nlohmann::json to_json(const RunRecord& r, bool list_missed) {
   nlohmann::json j = {{"method", r.method},
           {"bound", r.bound},
           {"broad_phase", r.broad_phase},
@@ -298,6 +306,7 @@ nlohmann::json to_json(const RunRecord& r) {
           {"continuous", r.continuous},
           {"conservative", r.conservative},
           {"dt", r.dt},
+          {"hz", r.hz},
           {"steps", r.steps},
           {"events", r.events},
           {"initial_contacts", r.initial_contacts},
@@ -330,6 +339,12 @@ nlohmann::json to_json(const RunRecord& r) {
     j["pair_checks"] = r.pair_checks;
     j["narrow_calls"] = r.narrow_calls;
     j["refreshes"] = r.refreshes;
+  }
+  if (list_missed) {
+    nlohmann::json missed = nlohmann::json::array();
+    for (const MissedEvent& m : r.missed_events)
+      missed.push_back({{"a", m.a}, {"b", m.b}, {"enter", m.enter}, {"exit", m.exit}});
+    j["missed_events"] = std::move(missed);
   }
   return j;
 }

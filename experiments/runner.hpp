@@ -35,6 +35,13 @@ struct RunInput {
   double acceleration_bound = 0.0;          ///< A given to Bounded bounds
   int repeats = 1;                          ///< timing repeats; times are medians
   const std::atomic<bool>* cancel = nullptr;  ///< checked once per step
+  bool list_missed = false;                 ///< fill RunRecord::missed_events
+};
+
+/// A ground-truth event the method missed (RunRecord::missed_events).
+struct MissedEvent {
+  std::uint32_t a = 0, b = 0;
+  double enter = 0.0, exit = 0.0;
 };
 
 struct RunRecord {
@@ -44,8 +51,12 @@ struct RunRecord {
   nlohmann::json options;      ///< what the method ran with: {"bound": {...}, "broad_phase": {...}}
   std::string knowledge;       ///< instant | exact | bounded
   bool continuous = false;
-  bool conservative = false;   ///< the bound's claim under its knowledge
+  /// The method's guarantee as it ran: continuous, a conservative bound, and for a bound
+  /// that assumes |acceleration| <= A, an A no smaller than the scene's largest. Discrete
+  /// methods never are (they see samples only).
+  bool conservative = false;
   double dt = 0.0;
+  double hz = 0.0;             ///< 1 / dt, or the frequency as the experiment gave it
   std::uint64_t steps = 0;     ///< samples (discrete) or steps (continuous)
   std::uint64_t events = 0;    ///< ground-truth events, all of them
   std::uint64_t initial_contacts = 0;  ///< of those, events in progress at t = 0 (enter == 0)
@@ -80,6 +91,7 @@ struct RunRecord {
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   bool counts_stable = true;           ///< identical counts over all repeats
+  std::vector<MissedEvent> missed_events;  ///< with RunInput::list_missed: sorted by enter (then a, b)
   bool cancelled = false;
 };
 
@@ -91,6 +103,6 @@ std::uint64_t sample_count(double horizon, double dt);
 /// returns with `cancelled` set.
 RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt);
 
-nlohmann::json to_json(const RunRecord& r);
+nlohmann::json to_json(const RunRecord& r, bool list_missed = false);
 
 }  // namespace ccdlab

@@ -8,6 +8,7 @@ echo "ccdlab: building (Release) ..." >&2
 "$root/scripts/build.sh" >/dev/null
 build=${CCDLAB_BUILD_DIR:-$root/build}
 mkdir -p "$root/results"
+echo "program: $build/ccdlab  (on PATH: export PATH=\"$build:\$PATH\", or install it: README.md, \"Installing\")"
 "$build/ccdlab" run "$root/data/experiments/default.json" -o "$root/results/default.json"
 echo "charts:"
 /usr/bin/python3 "$root/scripts/plot.py" "$root/results/default.json" -o "$root/results/default-plots"

@@ -43,6 +43,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <ctime>
 #include <fstream>
 #include <map>
@@ -273,6 +274,17 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if (!json_path.empty()) {
+    // The folder of --json is made (and checked) now, not after minutes of work.
+    const std::filesystem::path folder = std::filesystem::path(json_path).parent_path();
+    std::error_code ec;
+    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+    if (ec || (!folder.empty() && ::access(folder.c_str(), W_OK) != 0)) {
+      std::fprintf(stderr, "peers_bench: --json %s: cannot write into folder %s\n", json_path.c_str(),
+                   folder.c_str());
+      return 2;
+    }
+  }
   const double max_frame_ms = max_frame_s * 1e3;
   nlohmann::json results = nlohmann::json::array();
   nlohmann::json references = nlohmann::json::array();

@@ -34,10 +34,10 @@ struct PeerSceneReference {
 /// The table for N = 1000, 5000, 10000, 100000, 1000000 (seed 1).
 std::span<const PeerSceneReference> peer_scene_references();
 
-/// Side L of the cube: the README's table value for the listed N, else its cbrt formula.
+/// Side L of the cube: the table value of docs/peers.md for the listed N, else its cbrt formula.
 double peer_scene_side(std::size_t n);
 
-/// splitmix64's finaliser of (min << 32 | max): the README's pair_hash.
+/// splitmix64's finaliser of (min << 32 | max): the pair hash of docs/peers.md.
 std::uint64_t peer_pair_hash(std::uint32_t i, std::uint32_t j);
 /// Sum mod 2^64 of peer_pair_hash over the pairs (order does not matter).
 std::uint64_t peer_pair_checksum(std::span<const ccd::BodyPair> pairs);

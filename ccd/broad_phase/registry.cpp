@@ -1,4 +1,5 @@
 #include <ccd/broad_phase/registry.hpp>
+#include <ccd/util/nearest_name.hpp>
 
 #include <ccd/broad_phase/brute_force.hpp>
 #include <ccd/broad_phase/grid.hpp>
@@ -91,7 +92,12 @@ std::span<const BroadPhaseInfo> broad_phase_registry() { return kBroadPhases; }
 const BroadPhaseInfo& find_broad_phase(std::string_view name) {
   for (const BroadPhaseInfo& info : kBroadPhases)
     if (info.name == name) return info;
-  throw std::invalid_argument("unknown broad phase '" + std::string(name) + "' (valid: " + valid_names() + ")");
+  std::vector<std::string_view> names;
+  for (const BroadPhaseInfo& info : kBroadPhases) names.push_back(info.name);
+  const std::string near = nearest_name(name, names);
+  throw std::invalid_argument("unknown broad phase '" + std::string(name) + "'" +
+                              (near.empty() ? "" : " (did you mean \"" + near + "\"?)") + " (valid: " +
+                              valid_names() + ")");
 }
 
 BroadPhaseSpec parse_broad_phase(std::string_view spec) {

@@ -1,5 +1,8 @@
 #include <ccd/io/json_reader.hpp>
 
+#include <ccd/util/nearest_name.hpp>
+
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -130,6 +133,19 @@ json read_json_file(const std::string& path) {
   } catch (const InputError&) {
     if (limited.exceeded()) throw InputError(path, "", "larger than " + std::to_string(kMaxJsonBytes) + " bytes");
     throw;
+  }
+}
+
+void JsonReader::only_fields(const json& obj, const std::string& path,
+                             std::span<const std::string_view> known) const {
+  if (!obj.is_object()) return;
+  for (const auto& item : obj.items()) {
+    const std::string& key = item.key();
+    if (key == "comment" || std::find(known.begin(), known.end(), key) != known.end()) continue;
+    const bool plain = std::all_of(key.begin(), key.end(), [](char c) { return c >= ' ' && c != 0x7f; });
+    const std::string shown = plain ? key : json(key).dump();  // control characters escaped
+    fail(path.empty() ? shown : path + "." + shown,
+         "unknown field" + suggestion(key, known));
   }
 }
 

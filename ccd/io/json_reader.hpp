@@ -7,13 +7,18 @@
 // number must fit a double, and a file is at most kMaxJsonBytes long. Every failure
 // throws InputError naming the file and, where there is one, the field path.
 //
+// Every reader names the fields it knows in each object (JsonReader::only_fields): a
+// misspelt field is an error, never silently ignored.
+//
 // Field access (JsonReader): every failure throws InputError naming the file and the field
 // path (`bodies[3].radius`), so readers of different formats report bad input the same way.
 #include <ccd/geometry/vec3.hpp>
 #include <ccd/scene/input_error.hpp>
 
 #include <cstdint>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -37,6 +42,14 @@ struct JsonReader {
   [[noreturn]] void fail(const std::string& field, const std::string& what) const {
     throw InputError(file, field, what);
   }
+  /// Rejects a key of the object `obj` (at `path`) that is not in `known` and is not
+  /// "comment" (allowed in every object, for notes): `path.key: unknown field (did you mean
+  /// "x"?)`, the nearest known name, or the list of known names when none is near.
+  void only_fields(const nlohmann::json& obj, const std::string& path,
+                   std::initializer_list<std::string_view> known) const {
+    only_fields(obj, path, std::span<const std::string_view>(known.begin(), known.size()));
+  }
+  void only_fields(const nlohmann::json& obj, const std::string& path, std::span<const std::string_view> known) const;
   /// obj[key]; "missing required field" (named path.key) when absent.
   const nlohmann::json& require(const nlohmann::json& obj, const char* key, const std::string& path) const;
   /// A finite number.

@@ -22,6 +22,7 @@ std::string body_path(std::size_t i) { return "bodies[" + std::to_string(i) + "]
 Scene scene_from_json(const json& j, const std::string& file) {
   Reader r{file};
   if (!j.is_object()) r.fail("", "a scene must be a JSON object");
+  r.only_fields(j, "", {"format", "horizon", "gravity", "box", "bodies"});
   const json& format = r.require(j, "format", "");
   if (!format.is_string() || format.get<std::string>() != "ccdlab-scene/1")
     r.fail("format", "must be \"ccdlab-scene/1\"");
@@ -30,6 +31,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
   s.gravity = r.optional_vec3(j, "gravity", "");
   if (auto it = j.find("box"); it != j.end() && !it->is_null()) {
     if (!it->is_object()) r.fail("box", "must be an object with min and max");
+    r.only_fields(*it, "box", {"min", "max"});
     WallBox box;
     box.min = r.vec3(r.require(*it, "min", "box"), "box.min");
     box.max = r.vec3(r.require(*it, "max", "box"), "box.max");
@@ -42,6 +44,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
     const json& b = bodies[i];
     const std::string p = body_path(i);
     if (!b.is_object()) r.fail(p, "must be an object");
+    r.only_fields(b, p, {"radius", "position", "velocity", "acceleration", "acceleration_changes"});
     Body body;
     body.radius = r.number(r.require(b, "radius", p), p + ".radius");
     body.position = r.vec3(r.require(b, "position", p), p + ".position");
@@ -54,6 +57,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
         const json& c = (*it)[k];
         const std::string kp = cp + "[" + std::to_string(k) + "]";
         if (!c.is_object()) r.fail(kp, "must be an object with t and acceleration");
+        r.only_fields(c, kp, {"t", "acceleration"});
         AccelerationChange ch;
         ch.t = r.number(r.require(c, "t", kp), kp + ".t");
         ch.acceleration = r.vec3(r.require(c, "acceleration", kp), kp + ".acceleration");

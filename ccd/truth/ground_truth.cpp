@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <thread>
 #include <tuple>
 
@@ -243,6 +244,8 @@ TruthResult compute_truth_detailed(const Trajectories& traj, const TruthOptions&
   const std::size_t chunk = 4096;
   const std::size_t chunks = (runs.size() + chunk - 1) / chunk;
   std::vector<std::vector<ContactEvent>> found(chunks);
+  std::mutex progress_mutex;
+  std::size_t solved = 0;
   parallel_for(chunks, threads, [&](std::size_t c, unsigned) {
     std::vector<ContactInterval> iv;
     const std::size_t end = std::min(runs.size(), (c + 1) * chunk);
@@ -251,6 +254,11 @@ TruthResult compute_truth_detailed(const Trajectories& traj, const TruthOptions&
       iv.clear();
       pair_contact_intervals(traj, run.a, run.b, window_start(run.w_first), window_start(run.w_last + 1), iv);
       for (const ContactInterval& x : iv) found[c].push_back({run.a, run.b, x.enter, x.exit});
+    }
+    if (options.progress) {
+      const std::lock_guard<std::mutex> lock(progress_mutex);
+      solved += end - c * chunk;
+      options.progress(solved, runs.size());
     }
   });
   for (auto& f : found) result.events.insert(result.events.end(), f.begin(), f.end());

@@ -25,6 +25,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace ccd {
@@ -48,6 +49,9 @@ struct TruthOptions {
   static constexpr std::size_t max_auto_windows = 64;
   unsigned threads = default_threads;
   std::size_t windows = default_windows;
+  /// Called as the exact solving advances (candidate pair runs solved, of all of them),
+  /// from any of the worker threads, one call at a time; may be empty.
+  std::function<void(std::size_t done, std::size_t total)> progress;
 };
 
 /// Counters for the summary and for tuning.

@@ -1,4 +1,5 @@
 #include <ccd/util/parameters.hpp>
+#include <ccd/util/nearest_name.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -144,9 +145,12 @@ ParameterSet resolve_parameters(std::span<const ParameterSpec> specs, std::span<
   };
   std::string unknown;
   int unknown_count = 0;
+  std::vector<std::string_view> names;
+  for (const ParameterSpec& s : specs) names.push_back(s.name);
   for (const ParameterValue& v : given) {
     if (spec_of(v.name) != specs.end()) continue;
-    unknown += (unknown.empty() ? "" : ", ") + in_quotes(v.name);
+    const std::string near = nearest_name(v.name, names);
+    unknown += (unknown.empty() ? "" : ", ") + in_quotes(v.name) + (near.empty() ? "" : " (did you mean " + in_quotes(near) + "?)");
     ++unknown_count;
   }
   if (unknown_count > 0)

@@ -2,6 +2,7 @@
 #include "command.hpp"
 
 #include "../results_file.hpp"
+#include "../summary.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
@@ -38,7 +39,10 @@ int run_merge(std::span<const std::string> args) {
     ccd::OutputFile output(out, inputs);
     std::vector<ResultsShard> shards;
     for (const std::string& f : inputs) shards.push_back({f, ccd::read_json_file(f)});
-    output.commit(merge_results(shards).dump(1) + "\n");
+    const nlohmann::json merged = merge_results(shards);
+    output.commit(merged.dump(1) + "\n");
+    (out == "-" ? std::cerr : std::cout) << "\n" << summary_text(merged) << "\n";
+    if (out != "-") ccd::write_file_atomically(summary_path(out), summary_markdown(merged));
   } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab merge: " << e.what() << "\n";
     return kExitBadInput;
@@ -49,7 +53,7 @@ int run_merge(std::span<const std::string> args) {
     std::cerr << "ccdlab merge: " << e.what() << "\n";
     return 1;
   }
-  if (out != "-") std::cout << "results: " << out << "\n";
+  if (out != "-") std::cout << "results: " << out << "\nsummary: " << summary_path(out) << "\n";
   return 0;
 }
 
@@ -59,11 +63,12 @@ extern const Command kMergeCommand = {
     "merge", "join the shard results of one experiment (ccdlab run --shard K/N)",
     "usage: ccdlab merge SHARD.json... -o RESULTS.json\n"
     "\n"
-    "Checks every input as a ccdlab-results/1 file (every field with its type, job indices\n"
+    "Checks every input as a ccdlab-results/2 file (every field with its type, job indices\n"
     "within the experiment and owned by the shard), that all are shards of the same\n"
     "experiment, scene (contents, by digest) and ground truth, that no shard appears twice\n"
     "and none is missing, and writes one results file ordered by job ('-' = standard\n"
-    "output; never over an input).\n"
+    "output; never over an input). Prints the summary table of `ccdlab run` and writes it\n"
+    "beside the results (RESULTS.summary.md).\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_merge};

@@ -33,7 +33,9 @@ int run_methods(std::span<const std::string> args) {
     std::string name(b.name);
     if (!b.parameters.empty()) name += ":M";
     std::cout << "  " << std::setw(18) << name << std::setw(9) << ccd::to_string(b.knowledge) << std::setw(14)
-              << (b.knowledge == ccd::Knowledge::Instant ? "at samples" : b.conservative ? "yes" : "no")
+              << (b.knowledge == ccd::Knowledge::Instant ? "no (samples)"
+              : b.knowledge == ccd::Knowledge::Bounded && b.conservative ? "if |a| <= A"
+              : b.conservative ? "yes" : "no")
               << b.description << "\n";
     print_options(b.parameters);
   }

@@ -1,7 +1,9 @@
-// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]`
+// `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]
+//  [--force] [--list-missed]`
 #include "command.hpp"
 
 #include "../run_experiment.hpp"
+#include "../summary.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
@@ -42,8 +44,8 @@ int run_run(std::span<const std::string> args) {
     std::cerr << "ccdlab run: " << msg << " (see ccdlab run --help)\n";
     return kExitBadInput;
   };
-  std::string experiment_path, out_path, truth_path;
-  bool force = false;
+  std::string experiment_path, out_path, truth_path, summary_file;
+  bool force = false, list_missed = false;
   RunOptions options;
   options.threads = static_cast<int>(ccd::resolve_threads(0));
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -74,6 +76,8 @@ int run_run(std::span<const std::string> args) {
       options.quiet = true;
     } else if (a == "--force") {
       force = true;
+    } else if (a == "--list-missed") {
+      list_missed = true;
     } else if (!a.empty() && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (experiment_path.empty()) {
@@ -88,7 +92,8 @@ int run_run(std::span<const std::string> args) {
   std::string doing = "reading " + experiment_path;
   ccd::TruthFile stored_truth;  // --truth FILE: read before the run, used by it
   try {
-    const Experiment e = load_experiment(experiment_path);
+    Experiment e = load_experiment(experiment_path);
+    if (list_missed) e.list_missed = true;
     if (!e.scene_path.empty()) doing = "reading the scene " + e.scene_path;
     else doing = "generating the scene " + e.scene_generator.dump();
     const ccd::Scene scene = load_experiment_scene(e, experiment_path);
@@ -155,6 +160,14 @@ int run_run(std::span<const std::string> args) {
     }
     doing = "writing " + out_path;
     output.commit(results.dump(1) + "\n");
+    // The answer in one table: on the terminal (stderr when the results go to stdout) and
+    // beside the results as Markdown.
+    (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
+    if (out_path != "-") {
+      summary_file = summary_path(out_path);
+      doing = "writing " + summary_file;
+      ccd::write_file_atomically(summary_file, summary_markdown(results));
+    }
     if (!options.quiet) {
       std::size_t flagged = 0;
       for (const auto& r : results["records"]) flagged += !r["self_check"]["ok"].get<bool>();
@@ -173,7 +186,7 @@ int run_run(std::span<const std::string> args) {
     std::cerr << "ccdlab run: " << err.what() << "\n";
     return 1;
   }
-  if (out_path != "-") std::cout << "results: " << out_path << "\n";
+  if (out_path != "-") std::cout << "results: " << out_path << "\nsummary: " << summary_file << "\n";
   return 0;
 }
 
@@ -182,10 +195,13 @@ int run_run(std::span<const std::string> args) {
 extern const Command kRunCommand = {
     "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
     "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
-    "                  [--force]\n"
+    "                  [--force] [--list-missed]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
-    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md).\n"
+    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
+    "summary (per method: the largest dt with no miss, the cost at the cheapest zero-miss\n"
+    "point, the missed fraction at every dt) and writes it as Markdown beside the results\n"
+    "(RESULTS.summary.md).\n"
     "\n"
     "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
     "                     checked before the run (a regular file, not an input, in a folder\n"
@@ -202,6 +218,8 @@ extern const Command kRunCommand = {
     "  -q, --quiet        no progress on stderr\n"
     "  --force            run even when the work estimate (bodies x steps, summed over the\n"
     "                     jobs) is above 1e11 body-steps\n"
+    "  --list-missed      every record lists the contact events it missed (missed_events:\n"
+    "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",
     run_run};

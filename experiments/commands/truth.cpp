@@ -2,6 +2,8 @@
 // exact contact intervals of every pair (ground truth, format ccdlab-truth/2).
 #include "command.hpp"
 
+#include "../progress.hpp"
+
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
@@ -33,7 +35,7 @@ constexpr const char* kUsage =
     "                depend on it\n"
     "  --windows N   time windows of the space-time broad phase, at most 1000000 (default:\n"
     "                automatic)\n"
-    "  --quiet       print no summary\n"
+    "  --quiet       print no summary and no progress\n"
     "\n"
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
     "2 bad input or usage (no file written).\n";
@@ -99,6 +101,10 @@ int run_truth(std::span<const std::string> args) {
     const auto built = std::chrono::steady_clock::now();
     doing = "computing the ground truth of " + std::to_string(scene.bodies.size()) + " bodies" +
             (options.windows ? " in " + std::to_string(options.windows) + " windows" : std::string());
+    Progress progress(0, quiet);  // on stderr: a bar on a terminal, a line every 10 s otherwise
+    options.progress = [&progress](std::size_t solved, std::size_t total) {
+      progress.advance("candidate pairs solved", solved, total);
+    };
     const ccd::TruthResult result = ccd::compute_truth_detailed(traj, options);
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };

@@ -1,4 +1,5 @@
 #include <experiments/generators/registry.hpp>
+#include <ccd/util/nearest_name.hpp>
 
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -28,7 +29,11 @@ const Generator& generator_named(std::string_view name) {
     if (g.name == name) return g;
   std::string valid;
   for (const Generator& g : generators()) valid += (valid.empty() ? "" : ", ") + std::string(g.name);
-  throw std::invalid_argument("unknown generator '" + std::string(name) + "'; valid generators: " + valid);
+  std::vector<std::string_view> names;
+  for (const Generator& g : generators()) names.push_back(g.name);
+  const std::string near = ccd::nearest_name(name, names);
+  throw std::invalid_argument("unknown generator '" + std::string(name) + "'" +
+                              (near.empty() ? "" : " (did you mean \"" + near + "\"?)") + "; valid generators: " + valid);
 }
 
 namespace {

@@ -213,3 +213,35 @@ TEST_CASE("ccdlab run --truth reuses a stored truth of the same scene only", "[r
     CHECK_FALSE(fs::exists(reused));
   }
 }
+
+TEST_CASE("ccdlab run --list-missed lists every miss; the summary goes beside the results", "[run][cli]") {
+  const TempDir dir;
+  const std::string out = (dir.path / "r.json").string();
+  json e = small_experiment();
+  e.erase("dt");
+  e["hz"] = {10, 50};
+  const std::string file = dir.write("e.json", e);
+  REQUIRE(ccdlab(file + " -o " + out + " --quiet --list-missed --threads 1", nullptr, &dir) == 0);
+  const json r = read(out);
+  std::uint64_t listed = 0;
+  for (const json& rec : r["records"]) {
+    REQUIRE(rec.contains("missed_events"));
+    CHECK(rec["missed_events"].size() == rec["missed"].get<std::size_t>());
+    CHECK(rec["hz"].get<double>() * rec["dt"].get<double>() == Approx(1.0).epsilon(1e-15));
+    CHECK(rec["conservative"].get<bool>() == rec["continuous"].get<bool>());  // every bound here holds its claim
+    double previous = -1.0;
+    for (const json& m : rec["missed_events"]) {
+      CHECK(m["a"].get<int>() < m["b"].get<int>());
+      CHECK(m["enter"].get<double>() >= previous);
+      previous = m["enter"].get<double>();
+    }
+    listed += rec["missed_events"].size();
+  }
+  CHECK(listed > 0);  // at 10 Hz the discrete methods miss
+  std::ifstream md(dir.path / "r.summary.md");
+  REQUIRE(md.good());
+  const std::string summary((std::istreambuf_iterator<char>(md)), {});
+  CHECK(summary.find("| aabb/sap |") != std::string::npos);
+  CHECK(summary.find("| capsule/sap \\* |") != std::string::npos);
+  CHECK(summary.find("missed @ 10 Hz") != std::string::npos);
+}

@@ -193,3 +193,66 @@ TEST_CASE("events in progress at t = 0 are counted apart from misses, lag and pe
   CHECK(j["initial_contacts"] == 1);
   CHECK(j["missed_fraction"] == 1.0);  // 1 missed of the 1 event not in progress at t = 0
 }
+
+namespace {
+
+// Four head-on pairs of radius-0.5 spheres, 10 apart in y, each pair closing at relative
+// speed 2 from centres at -s and +s: in contact exactly for t in [s - 0.5, s + 0.5].
+// s = 7, 1.75, 3, 5.5 for bodies (0, 1), (2, 3), (4, 5), (6, 7).
+ccd::Scene four_pairs() {
+  ccd::Scene sc;
+  sc.horizon = 10.0;
+  const double s[] = {7.0, 1.75, 3.0, 5.5};
+  for (int p = 0; p < 4; ++p) {
+    sc.bodies.push_back({0.5, Vec3(-s[p], 10.0 * p, 0), Vec3(1, 0, 0), Vec3::Zero(), {}});
+    sc.bodies.push_back({0.5, Vec3(s[p], 10.0 * p, 0), Vec3(-1, 0, 0), Vec3::Zero(), {}});
+  }
+  return sc;
+}
+
+}  // namespace
+
+TEST_CASE("list_missed: the missed events are the truth events no sample falls in, by enter time", "[runner]") {
+  const Fixture f(four_pairs());
+  REQUIRE(f.truth.events().size() == 4);
+  ccdlab::RunInput in;
+  in.scene = &f.scene;
+  in.trajectories = &f.traj;
+  in.truth = &f.truth;
+  in.list_missed = true;
+  // Samples 0, 2, 4, 6, 8, 10: [1.25, 2.25] holds 2 and [5, 6] holds 6; [2.5, 3.5] and
+  // [6.5, 7.5] hold none.
+  const auto r = run_method(in, parse_method("aabb/sap"), 2.0);
+  CHECK(r.missed == 2);
+  REQUIRE(r.missed_events.size() == 2);
+  CHECK(r.missed_events[0].a == 4);
+  CHECK(r.missed_events[0].b == 5);
+  CHECK(r.missed_events[0].enter == Approx(2.5).epsilon(1e-12));
+  CHECK(r.missed_events[0].exit == Approx(3.5).epsilon(1e-12));
+  CHECK(r.missed_events[1].a == 0);
+  CHECK(r.missed_events[1].b == 1);
+  CHECK(r.missed_events[1].enter == Approx(6.5).epsilon(1e-12));
+  const auto j = ccdlab::to_json(r, true);
+  REQUIRE(j["missed_events"].size() == 2);
+  CHECK(j["missed_events"][0]["a"] == 4);
+  CHECK(j["missed_events"][1]["enter"].get<double>() == r.missed_events[1].enter);
+  CHECK_FALSE(ccdlab::to_json(r, false).contains("missed_events"));
+  // Every event missed at a dt that skips them all, none by a conservative bound.
+  CHECK(run_method(in, parse_method("aabb/sap"), 4.0).missed_events.size() == 4);  // samples 0, 4, 8: in none
+  CHECK(run_method(in, parse_method("capsule/sap"), 4.0).missed_events.empty());
+  // Without the option the list stays empty.
+  in.list_missed = false;
+  CHECK(run_method(in, parse_method("aabb/sap"), 2.0).missed_events.empty());
+}
+
+TEST_CASE("conservative in records: the guarantee as the method ran", "[runner]") {
+  ccd::Scene s = head_on();
+  s.gravity = Vec3(0, -8, 0);  // largest acceleration 8
+  const Fixture f(s);
+  CHECK_FALSE(f.run("aabb/grid", 0.5, 8.0).conservative);    // discrete: samples only
+  CHECK_FALSE(f.run("sphere/brute", 0.5, 8.0).conservative);
+  CHECK(f.run("capsule/grid", 0.5, 8.0).conservative);       // knows the exact motion
+  CHECK(f.run("horn:4/grid", 0.5, 8.0).conservative);        // A = the scene's largest
+  CHECK_FALSE(f.run("horn:4/grid", 0.5, 4.0).conservative);  // A below it: no guarantee
+  CHECK(f.run("aabb/grid", 0.25, 8.0).hz == 4.0);
+}

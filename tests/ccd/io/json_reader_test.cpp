@@ -52,3 +52,29 @@ TEST_CASE("JsonReader::count and friends name the field", "[io][json]") {
   CHECK_THROWS_WITH(r.boolean(j["s"], "s"), "f.json: s: must be true or false");
   CHECK(r.boolean(j["b"], "b"));
 }
+
+TEST_CASE("only_fields: an unknown field is an error with the nearest known name", "[io][json]") {
+  const std::string file = "scene.json";
+  const ccd::JsonReader r{file};
+  const auto body = parse_json_text(R"({"radius": 1, "position": [0, 0, 0], "velocty": [1, 0, 0]})", file);
+  CHECK_THROWS_WITH(r.only_fields(body, "bodies[3]", {"radius", "position", "velocity", "acceleration"}),
+                    R"(scene.json: bodies[3].velocty: unknown field (did you mean "velocity"?))");
+  SECTION("a name far from every known one lists them") {
+    const auto j = parse_json_text(R"({"radius": 1, "colour": "red"})", file);
+    CHECK_THROWS_WITH(r.only_fields(j, "bodies[0]", {"radius", "position"}),
+                      "scene.json: bodies[0].colour: unknown field (known: radius, position)");
+  }
+  SECTION("at the top level the field is named alone") {
+    const auto j = parse_json_text(R"({"horizn": 1})", file);
+    CHECK_THROWS_WITH(r.only_fields(j, "", {"format", "horizon"}),
+                      R"(scene.json: horizn: unknown field (did you mean "horizon"?))");
+  }
+  SECTION("comment is allowed in every object, known fields pass") {
+    const auto j = parse_json_text(R"({"comment": ["any", "note"], "radius": 1})", file);
+    CHECK_NOTHROW(r.only_fields(j, "bodies[0]", {"radius"}));
+  }
+  SECTION("a key with control characters is shown escaped, on one line") {
+    const auto j = parse_json_text("{\"a\\nb\": 1}", file);
+    CHECK_THROWS_WITH(r.only_fields(j, "", {"ab"}), R"(scene.json: "a\nb": unknown field (did you mean "ab"?))");
+  }
+}

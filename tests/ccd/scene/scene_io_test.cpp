@@ -138,3 +138,28 @@ TEST_CASE("a body with no room between two walls must not move along that axis",
     CHECK_NOTHROW(ccd::validate_scene(s, "s.json"));
   }
 }
+
+TEST_CASE("a misspelt field in a scene is an error with the nearest known name", "[scene]") {
+  json j = valid_scene();
+  SECTION("in a body") {
+    j["bodies"][1]["velocty"] = json::array({1, 0, 0});
+    CHECK(error_of(j) == R"(s.json: bodies[1].velocty: unknown field (did you mean "velocity"?))");
+  }
+  SECTION("at the top") {
+    j["gravty"] = json::array({0, -9.81, 0});
+    CHECK(error_of(j) == R"(s.json: gravty: unknown field (did you mean "gravity"?))");
+  }
+  SECTION("in the box") {
+    j["box"] = {{"min", {-100, -100, -100}}, {"max", {100, 100, 100}}, {"restitution", 1}};
+    CHECK(error_of(j) == "s.json: box.restitution: unknown field (known: min, max)");
+  }
+  SECTION("in an acceleration change") {
+    j["bodies"][0]["acceleration_changes"] = json::array({{{"t", 0.5}, {"acceleration", {1, 0, 0}}, {"when", 1}}});
+    CHECK(error_of(j) == "s.json: bodies[0].acceleration_changes[0].when: unknown field (known: t, acceleration)");
+  }
+  SECTION("comment is allowed anywhere") {
+    j["comment"] = "a note";
+    j["bodies"][0]["comment"] = "body zero";
+    CHECK(error_of(j).empty());
+  }
+}

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the build tree BUILD into a temporary prefix, checks that no build option of
+# ccdlab's own (-march=native, sanitizers, warnings) reaches the exported targets, then
+# configures, builds and runs tests/packaging/consumer against the installed package.
+# Usage: install_test.sh SOURCE_DIR BUILD_DIR
+set -euo pipefail
+src=$1
+build=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cmake --install "$build" --prefix "$work/prefix" >/dev/null
+targets=$(ls "$work"/prefix/lib*/cmake/ccdlab/ccdlabTargets*.cmake)
+if grep -nE -- '-march|-fsanitize|-Werror|-Wall|ccdlab_options|ccdlab_warnings' $targets; then
+  echo "install_test: a build option of ccdlab leaks into the installed package" >&2
+  exit 1
+fi
+test -x "$work/prefix/bin/ccdlab"
+test -f "$work/prefix/include/ccdlab/ccd/scene/scene.hpp"
+cmake -S "$src/tests/packaging/consumer" -B "$work/consumer" -DCMAKE_BUILD_TYPE=Release \
+  -DCMAKE_PREFIX_PATH="$work/prefix" >/dev/null
+cmake --build "$work/consumer" -j2 >/dev/null
+"$work/consumer/consumer"
+"$work/consumer/consumer_core"
+"$work/prefix/bin/ccdlab" --version
