@@ -51,6 +51,18 @@ struct PairTest {
   static PairTest possible_from(double t) { return {Status::Possible, t}; }
 };
 
+/// The time window a body's bound covers (seconds). After `prepare` every body has the
+/// step's window; a scheduler's `refresh` gives some bodies a later one.
+struct Window {
+  double t0 = 0.0;
+  double t1 = 0.0;
+};
+
+/// The part of time both windows cover, [max t0, min t1]; empty when lo > hi.
+inline Window common_window(const Window& a, const Window& b) {
+  return {a.t0 > b.t0 ? a.t0 : b.t0, a.t1 < b.t1 ? a.t1 : b.t1};
+}
+
 struct StepContext {
   double t0 = 0.0;                       ///< step start (the sample time for Instant bounds)
   double t1 = 0.0;                       ///< step end (== t0 for Instant bounds)
@@ -68,7 +80,21 @@ class Bound {
   virtual void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) = 0;
   /// The bound's own test for a pair the broad phase reported: Disjoint only when the
   /// two bounds are disjoint, else Possible with the earliest possible contact time.
+  /// The bodies' windows may differ (after `refresh`): the test then covers the common
+  /// part of both windows (common_window) and is Disjoint when that part is empty;
+  /// `earliest` lies in it, and no contact is possible in it before `earliest` while the
+  /// bound's assumption holds (every conservative bound guarantees this; bounds without
+  /// timing return the common window's start).
   virtual PairTest test(std::uint32_t a, std::uint32_t b) const = 0;
+  /// For a scheduler (ccd/pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
+  /// only, over the window [ctx.t0, ctx.t1], from ctx.start (indexed by body; only the
+  /// listed entries are read) and writes their boxes into boxes[body]; every other body
+  /// keeps its window and data. Without a `prepare` first, only the refreshed bodies
+  /// hold a bound (a scheduler's scratch instance for single pairs). Instant bounds have
+  /// no window: the default throws std::logic_error.
+  virtual void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes);
+  /// The window body `body` covers since its last prepare or refresh.
+  virtual Window window(std::uint32_t body) const = 0;
 };
 
 }  // namespace ccd

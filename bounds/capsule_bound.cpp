@@ -18,44 +18,60 @@ double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
 
 }  // namespace
 
+Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
+  const Trajectories& tr = *ctx.exact;
+  const Vec3 p0 = tr.position(i, ctx.t0);
+  const Vec3 p1 = tr.position(i, ctx.t1);
+  double e = 0.0;
+  const auto pieces = tr.pieces(i);
+  const Piece* q = &tr.piece_at(i, ctx.t0);
+  for (; q != pieces.data() + pieces.size() && q->t0 <= ctx.t1; ++q) {
+    const double u0 = std::max(ctx.t0, q->t0);
+    const double u1 = std::min(ctx.t1, q->t1);
+    if (u1 < u0) continue;
+    const double hk = u1 - u0;
+    const double dev = q->a.norm() * hk * hk / 8.0;
+    const double ends = q->t0 <= ctx.t0 && q->t1 >= ctx.t1
+                            ? 0.0  // the single piece's chord is S itself
+                            : std::max(point_segment_distance(q->position(u0), p0, p1),
+                                       point_segment_distance(q->position(u1), p0, p1));
+    e = std::max(e, ends + dev);
+  }
+  Aabb swept = tr.swept_bounds(i, ctx.t0, ctx.t1);
+  const double magnitude = swept.lo.cwiseAbs().cwiseMax(swept.hi.cwiseAbs()).maxCoeff() + e;
+  const double slack = rounding_slack(magnitude);
+  const double radius = tr.radius(i) + e + slack;
+  capsules_[i] = {p0, p1, radius, max_speed(tr, i, ctx.t0, ctx.t1), tr.radius(i)};
+  swept.lo.array() -= slack;
+  swept.hi.array() += slack;
+  const Aabb cap{p0.cwiseMin(p1).array() - radius, p0.cwiseMax(p1).array() + radius};
+  return {swept.lo.cwiseMax(cap.lo), swept.hi.cwiseMin(cap.hi)};
+}
+
 void CapsuleBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   if (!ctx.exact) throw std::invalid_argument("capsule needs the exact trajectories (StepContext::exact)");
-  t0_ = ctx.t0;
-  const Trajectories& tr = *ctx.exact;
-  const std::size_t n = tr.size();
+  const std::size_t n = ctx.exact->size();
   capsules_.resize(n);
   boxes.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 p0 = tr.position(i, ctx.t0);
-    const Vec3 p1 = tr.position(i, ctx.t1);
-    double e = 0.0;
-    const auto pieces = tr.pieces(i);
-    const Piece* q = &tr.piece_at(i, ctx.t0);
-    for (; q != pieces.data() + pieces.size() && q->t0 <= ctx.t1; ++q) {
-      const double u0 = std::max(ctx.t0, q->t0);
-      const double u1 = std::min(ctx.t1, q->t1);
-      if (u1 < u0) continue;
-      const double hk = u1 - u0;
-      const double dev = q->a.norm() * hk * hk / 8.0;
-      const double ends = q->t0 <= ctx.t0 && q->t1 >= ctx.t1
-                              ? 0.0  // the single piece's chord is S itself
-                              : std::max(point_segment_distance(q->position(u0), p0, p1),
-                                         point_segment_distance(q->position(u1), p0, p1));
-      e = std::max(e, ends + dev);
-    }
-    Aabb swept = tr.swept_bounds(i, ctx.t0, ctx.t1);
-    const double magnitude = swept.lo.cwiseAbs().cwiseMax(swept.hi.cwiseAbs()).maxCoeff() + e;
-    const double slack = rounding_slack(magnitude);
-    const double radius = tr.radius(i) + e + slack;
-    capsules_[i] = {p0, p1, radius};
-    swept.lo.array() -= slack;
-    swept.hi.array() += slack;
-    const Aabb cap{p0.cwiseMin(p1).array() - radius, p0.cwiseMax(p1).array() + radius};
-    boxes[i] = {swept.lo.cwiseMax(cap.lo), swept.hi.cwiseMin(cap.hi)};
+  for (std::size_t i = 0; i < n; ++i) boxes[i] = build(ctx, i);
+  windows_.assign(n, Window{ctx.t0, ctx.t1});
+}
+
+void CapsuleBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
+  if (!ctx.exact) throw std::invalid_argument("capsule needs the exact trajectories (StepContext::exact)");
+  if (capsules_.size() != ctx.exact->size()) {  // no prepare before: room for every body
+    capsules_.resize(ctx.exact->size());
+    windows_.resize(ctx.exact->size());
+  }
+  for (const std::uint32_t i : bodies) {
+    boxes[i] = build(ctx, i);
+    windows_[i] = {ctx.t0, ctx.t1};
   }
 }
 
 PairTest CapsuleBound::test(std::uint32_t a, std::uint32_t b) const {
+  const Window w = common_window(windows_[a], windows_[b]);
+  if (w.t0 > w.t1) return PairTest::disjoint();
   const Capsule& x = capsules_[a];
   const Capsule& y = capsules_[b];
   const SegmentSegmentResult c = segment_segment_closest(x.p0, x.p1, y.p0, y.p1);
@@ -64,7 +80,9 @@ PairTest CapsuleBound::test(std::uint32_t a, std::uint32_t b) const {
                                ((x.p1 - x.p0).squaredNorm() + (y.p1 - y.p0).squaredNorm() +
                                 (x.p0 - y.p0).squaredNorm());
   if (c.distance_squared > R * R + closest_error) return PairTest::disjoint();
-  return PairTest::possible_from(t0_);
+  const double t = speed_earliest({x.p0, windows_[a].t0, x.speed, x.body_radius},
+                                  {y.p0, windows_[b].t0, y.speed, y.body_radius});
+  return PairTest::possible_from(std::min(t, w.t1));
 }
 
 }  // namespace ccd

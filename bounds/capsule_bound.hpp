@@ -17,8 +17,10 @@
 // both of which contain the body. Pair test: segment-segment distance (ccd/queries/
 // segment_segment.hpp) <= r1 + r2 (squared compare, with the rounding slack of rounding.hpp
 // on the radii and 16 ulps of |d1|^2 + |d2|^2 + |p1 - p2|^2 for the closest-pair error).
-// Conservative. `earliest` is t0.
+// Conservative. `earliest`: a capsule carries no timing, so it comes from speed bounds
+// (bounds/speed_earliest.hpp: centre at the window's start, largest speed in the window). Refresh: one body's capsule over its own window.
 #include <bounds/bound.hpp>
+#include <bounds/speed_earliest.hpp>
 
 namespace ccd {
 
@@ -28,14 +30,19 @@ class CapsuleBound final : public Bound {
     Vec3 p0;        ///< centre at t0
     Vec3 p1;        ///< centre at t1
     double radius;  ///< r + e + slack
+    double speed;   ///< largest speed over the window
+    double body_radius;
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
+  Window window(std::uint32_t body) const override { return windows_[body]; }
   const Capsule& capsule(std::uint32_t body) const { return capsules_[body]; }
 
  private:
+  Aabb build(const StepContext& ctx, std::size_t i);
   std::vector<Capsule> capsules_;
-  double t0_ = 0.0;
+  std::vector<Window> windows_;
 };
 
 }  // namespace ccd

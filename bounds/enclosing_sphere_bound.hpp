@@ -11,8 +11,12 @@
 // Walls: a body whose sphere of centres reaches a wall plane (min + r, max - r) may reflect;
 // it is replaced by its box, folded into the walls per axis (bounds/wall_fold.hpp), and the
 // pair test becomes sphere-box (squared distance from the centre to the box) or box-box.
-// Conservative whenever |acceleration| <= A (walls included). `earliest` is t0.
+// Conservative whenever |acceleration| <= A (walls included). `earliest`: a static sphere
+// carries no timing, so it comes from speed bounds (bounds/speed_earliest.hpp: the centre
+// at the window's start, speed <= |v| + A h over the window). Refresh: one body's sphere over
+// its own window.
 #include <bounds/bound.hpp>
+#include <bounds/speed_earliest.hpp>
 
 namespace ccd {
 
@@ -23,14 +27,18 @@ class EnclosingSphereBound final : public Bound {
     double radius;  ///< r + the centre region's radius + slack
     bool boxed;     ///< folded at a wall: the shape is `box` instead of the sphere
     Aabb box;
+    SpeedBall ball;  ///< for `earliest`
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
+  Window window(std::uint32_t body) const override { return windows_[body]; }
   const Shape& shape(std::uint32_t body) const { return shapes_[body]; }
 
  private:
+  Aabb build(const StepContext& ctx, std::size_t i);
   std::vector<Shape> shapes_;
-  double t0_ = 0.0;
+  std::vector<Window> windows_;
 };
 
 }  // namespace ccd

@@ -13,6 +13,8 @@
 // the horn's centre may pass a wall plane uses the static folded interval of that
 // sub-interval (bounds/wall_fold.hpp): conservative across reflections, looser there.
 // Guarantee: conservative whenever |acceleration| <= A over the step (walls included).
+// Refresh: one body's trapezoids over its own window. Bodies over different windows are
+// compared by trapezoid_sequence_overlap (split at the union of both bodies' breakpoints).
 // M = 4 by default: slack A h^2 / 128, a quarter of the pair cost of M = 8.
 #include <bounds/bound.hpp>
 #include <bounds/trapezoid.hpp>
@@ -25,11 +27,17 @@ class HornBound final : public Bound {
   explicit HornBound(int pieces = default_pieces);
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
+  Window window(std::uint32_t body) const override {
+    const Trapezoid* z = traps_.data() + std::size_t{body} * m_;
+    return {z[0].t0, z[m_ - 1].t1};
+  }
   int pieces() const { return m_; }
   /// Trapezoid j (sub-interval j, 0 <= j < M) of `body` from the last prepare.
   const Trapezoid& trapezoid(std::uint32_t body, int j) const { return traps_[std::size_t{body} * m_ + j]; }
 
  private:
+  Aabb build(const StepContext& ctx, std::size_t i);
   int m_;
   std::vector<Trapezoid> traps_;
 };

@@ -10,6 +10,10 @@
 // Zero (or < 1e-100) velocity: the axis-aligned frame.
 // Walls: a body whose horn may pass a wall plane during the step uses the axis-aligned frame
 // with the folded trapezoids of `horn:M` (conservative across reflections).
+// Refresh: one body's trapezoids over its own window. Bodies over different windows are
+// compared on the sub-intervals between the union of both bodies' breakpoints (each
+// oriented trapezoid restricted by linear interpolation, half-widths widened by the
+// interpolation's rounding error).
 // Guarantee: conservative whenever |acceleration| <= A over the step.
 #include <bounds/bound.hpp>
 #include <bounds/oriented_trapezoid.hpp>
@@ -22,6 +26,11 @@ class HornSatBound final : public Bound {
   explicit HornSatBound(int pieces = default_pieces);
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
+  Window window(std::uint32_t body) const override {
+    const double* t = times_.data() + std::size_t{body} * (m_ + 1);
+    return {t[0], t[m_]};
+  }
   int pieces() const { return m_; }
   /// Oriented trapezoid j (0 <= j < M) of `body` from the last prepare.
   OrientedTrapezoid trapezoid(std::uint32_t body, int j) const;
@@ -30,10 +39,12 @@ class HornSatBound final : public Bound {
   struct Ends {
     Vec3 c0, c1, h0, h1;
   };
+  Aabb build(const StepContext& ctx, std::size_t i);
+  PairTest test_split(std::uint32_t a, std::uint32_t b) const;
   int m_;
   std::vector<Eigen::Matrix3d> frames_;
   std::vector<Ends> ends_;
-  std::vector<double> times_;         // the M + 1 sub-interval ends
+  std::vector<double> times_;         // per body, its M + 1 sub-interval ends
   std::vector<Trapezoid> scratch_;    // one body's axis-aligned trapezoids
 };
 

@@ -12,6 +12,7 @@ class SphereBound final : public Bound {
  public:
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  Window window(std::uint32_t) const override { return {t0_, t0_}; }
 
  private:
   struct Ball {

@@ -1,28 +1,48 @@
 #include <bounds/rounding.hpp>
 #include <bounds/swept_aabb_bound.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace ccd {
 
+Aabb SweptAabbBound::build(const StepContext& ctx, std::size_t i) {
+  const Trajectories& tr = *ctx.exact;
+  balls_[i] = {tr.position(i, ctx.t0), ctx.t0, max_speed(tr, i, ctx.t0, ctx.t1), tr.radius(i)};
+  Aabb box = ctx.exact->swept_bounds(i, ctx.t0, ctx.t1);
+  const double slack = rounding_slack(box.lo.cwiseAbs().cwiseMax(box.hi.cwiseAbs()).maxCoeff());
+  box.lo.array() -= slack;
+  box.hi.array() += slack;
+  return box;
+}
+
 void SweptAabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   if (!ctx.exact) throw std::invalid_argument("swept_aabb needs the exact trajectories (StepContext::exact)");
-  t0_ = ctx.t0;
   const std::size_t n = ctx.exact->size();
   boxes.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    Aabb box = ctx.exact->swept_bounds(i, ctx.t0, ctx.t1);
-    const double slack = rounding_slack(box.lo.cwiseAbs().cwiseMax(box.hi.cwiseAbs()).maxCoeff());
-    box.lo.array() -= slack;
-    box.hi.array() += slack;
-    boxes[i] = box;
-  }
+  balls_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) boxes[i] = build(ctx, i);
   boxes_.assign(boxes.begin(), boxes.end());
+  windows_.assign(n, Window{ctx.t0, ctx.t1});
+}
+
+void SweptAabbBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
+  if (!ctx.exact) throw std::invalid_argument("swept_aabb needs the exact trajectories (StepContext::exact)");
+  if (boxes_.size() != ctx.exact->size()) {  // no prepare before: room for every body
+    boxes_.resize(ctx.exact->size());
+    windows_.resize(ctx.exact->size());
+    balls_.resize(ctx.exact->size());
+  }
+  for (const std::uint32_t i : bodies) {
+    boxes_[i] = boxes[i] = build(ctx, i);
+    windows_[i] = {ctx.t0, ctx.t1};
+  }
 }
 
 PairTest SweptAabbBound::test(std::uint32_t a, std::uint32_t b) const {
-  if (!boxes_[a].overlaps(boxes_[b])) return PairTest::disjoint();
-  return PairTest::possible_from(t0_);
+  const Window w = common_window(windows_[a], windows_[b]);
+  if (w.t0 > w.t1 || !boxes_[a].overlaps(boxes_[b])) return PairTest::disjoint();
+  return PairTest::possible_from(std::min(speed_earliest(balls_[a], balls_[b]), w.t1));
 }
 
 }  // namespace ccd

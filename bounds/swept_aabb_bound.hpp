@@ -3,8 +3,11 @@
 // [t0, t1], from the exact piecewise-quadratic trajectory (Trajectories::swept_bounds:
 // piece end points and parabola vertices, wall reflections included), widened by the
 // rounding slack. Test: box overlap. Conservative: the box contains the swept sphere.
-// `earliest` is t0 (a static box carries no timing).
+// `earliest`: the box carries no timing, so it comes from speed bounds
+// (bounds/speed_earliest.hpp: centre at the window's start, largest speed in the window).
+// Refresh: one body's box over its own window.
 #include <bounds/bound.hpp>
+#include <bounds/speed_earliest.hpp>
 
 namespace ccd {
 
@@ -12,10 +15,14 @@ class SweptAabbBound final : public Bound {
  public:
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
+  Window window(std::uint32_t body) const override { return windows_[body]; }
 
  private:
+  Aabb build(const StepContext& ctx, std::size_t i);
   std::vector<Aabb> boxes_;
-  double t0_ = 0.0;
+  std::vector<Window> windows_;
+  std::vector<SpeedBall> balls_;
 };
 
 }  // namespace ccd

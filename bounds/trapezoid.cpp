@@ -2,9 +2,69 @@
 #include <bounds/trapezoid.hpp>
 #include <bounds/wall_fold.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace ccd {
+
+Trapezoid restrict_trapezoid(const Trapezoid& z, double u0, double u1) {
+  if (u0 == z.t0 && u1 == z.t1) return z;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const double h = z.t1 - z.t0;
+  Trapezoid r;
+  r.t0 = u0;
+  r.t1 = u1;
+  if (!(h > 0.0)) {  // a single instant: the faces do not move
+    r.lo0 = r.lo1 = z.lo0.cwiseMin(z.lo1);
+    r.hi0 = r.hi1 = z.hi0.cwiseMax(z.hi1);
+    return r;
+  }
+  // Error of the fraction (t - z.t0) / h: the subtraction's rounding (an ulp of the larger
+  // time) over h, and the division's.
+  const double du = 4.0 * eps * (std::abs(z.t0) + std::abs(z.t1) + std::abs(u0) + std::abs(u1)) / h + 4.0 * eps;
+  const double f0 = std::min(1.0, std::max(0.0, (u0 - z.t0) / h));
+  const double f1 = std::min(1.0, std::max(0.0, (u1 - z.t0) / h));
+  for (int k = 0; k < 3; ++k) {
+    const double dlo = z.lo1[k] - z.lo0[k], dhi = z.hi1[k] - z.hi0[k];
+    const double mag = std::max({std::abs(z.lo0[k]), std::abs(z.lo1[k]), std::abs(z.hi0[k]), std::abs(z.hi1[k])});
+    const double wlo = du * std::abs(dlo) + 4.0 * eps * mag;
+    const double whi = du * std::abs(dhi) + 4.0 * eps * mag;
+    r.lo0[k] = z.lo0[k] + dlo * f0 - wlo;
+    r.lo1[k] = z.lo0[k] + dlo * f1 - wlo;
+    r.hi0[k] = z.hi0[k] + dhi * f0 + whi;
+    r.hi1[k] = z.hi0[k] + dhi * f1 + whi;
+  }
+  return r;
+}
+
+PairTest trapezoid_sequence_overlap(const Trapezoid* za, int ma, const Trapezoid* zb, int mb) {
+  if (ma <= 0 || mb <= 0) return PairTest::disjoint();
+  const double lo = std::max(za[0].t0, zb[0].t0);
+  const double hi = std::min(za[ma - 1].t1, zb[mb - 1].t1);
+  if (lo > hi) return PairTest::disjoint();
+  int i = 0, j = 0;
+  while (i < ma && za[i].t1 < lo) ++i;
+  while (j < mb && zb[j].t1 < lo) ++j;
+  while (i < ma && j < mb) {
+    const double u0 = std::max({za[i].t0, zb[j].t0, lo});
+    const double u1 = std::min({za[i].t1, zb[j].t1, hi});
+    if (u0 <= u1) {
+      const PairTest o = trapezoid_overlap(restrict_trapezoid(za[i], u0, u1), restrict_trapezoid(zb[j], u0, u1));
+      if (o.possible()) return o;
+    }
+    if (u1 >= hi) break;
+    if (za[i].t1 < zb[j].t1) {
+      ++i;
+    } else if (zb[j].t1 < za[i].t1) {
+      ++j;
+    } else {
+      ++i;
+      ++j;
+    }
+  }
+  return PairTest::disjoint();
+}
 
 bool horn_trapezoids(const BodyState& s, double t0, double t1, double A, const std::optional<WallBox>& walls,
                      int m, Trapezoid* out) {

@@ -65,6 +65,20 @@ inline PairTest trapezoid_overlap(const Trapezoid& a, const Trapezoid& b) {
   return {PairTest::Status::Possible, a.t0 + u_lo * (a.t1 - a.t0)};
 }
 
+/// The part of `z` over [u0, u1] (z.t0 <= u0 <= u1 <= z.t1): faces interpolated
+/// linearly, then widened outwards by the interpolation's rounding error (the error of the
+/// time fraction times the faces' change, plus 4 ulps of the faces' magnitude), so the
+/// result contains the exact restriction. `z` itself when [u0, u1] is its whole interval.
+Trapezoid restrict_trapezoid(const Trapezoid& z, double u0, double u1);
+
+/// The PairTest of two bodies each covered by a sequence of trapezoids (contiguous, in
+/// time order: za[0..ma), zb[0..mb)) over the common part of their intervals: each
+/// sub-interval between consecutive breakpoints of either sequence is tested with the
+/// restricted trapezoids, in time order; Possible at the first overlap with its earliest
+/// time, Disjoint when none (or when the sequences share no time). Sequences over the same
+/// breakpoints take the same path as a per-piece trapezoid_overlap.
+PairTest trapezoid_sequence_overlap(const Trapezoid* za, int ma, const Trapezoid* zb, int mb);
+
 /// Writes the `m` trapezoids covering the horn of a body with state `s` at t0 over equal
 /// sub-intervals of [t0, t1], acceleration bound `A`, into out[0..m). With walls, an axis of
 /// a sub-interval on which the free centre may pass a wall plane (min + r, max - r) is

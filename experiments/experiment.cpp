@@ -142,7 +142,7 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
   std::vector<json> identities;  // each method resolved, parallel to e.methods
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const std::string field = "methods[" + std::to_string(i) + "]";
-    if (!methods[i].is_string()) r.fail(field, "must be a string BOUND/BROADPHASE");
+    if (!methods[i].is_string()) r.fail(field, "must be a string BOUND/BROADPHASE[@SCHEDULER]");
     MethodSpec m;
     try {
       m = parse_method(methods[i].get<std::string>());
@@ -152,7 +152,8 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
     // Compared as resolved, every option filled in: "horn/grid", "horn:4/grid" and
     // "horn:04/grid" are one method, spelled three ways.
     json resolved = {std::string(m.bound.info->name), m.bound.options.to_json(), std::string(m.broad_phase.info->name),
-                     m.broad_phase.options.to_json()};
+                     m.broad_phase.options.to_json(), std::string(m.scheduler.info->name),
+                     m.scheduler.options.to_json()};
     const auto first = std::find(identities.begin(), identities.end(), resolved);
     if (first != identities.end())
       r.fail(field, "method '" + m.name + "' is the same method as methods[" +

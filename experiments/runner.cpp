@@ -2,6 +2,7 @@
 
 #include <ccd/motion/state_cursor.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
+#include <ccd/pipeline/earliest_scheduler.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
 #include <algorithm>
@@ -24,6 +25,7 @@ struct Counts {
   std::map<std::string, std::uint64_t, std::less<>> counters;  // the broad phase's own, summed over steps
   std::uint64_t rebuilds = 0;  // steps at which the broad phase built its structure from scratch
   std::uint64_t unexpected = 0;
+  std::uint64_t pair_checks = 0, narrow_calls = 0, refreshes = 0, steps = 0;  // scheduled methods
   double bound_s = 0, broad_s = 0, narrow_s = 0, total_s = 0;
   double first_broad_s = 0;  // the broad phase at the first step (sap: the initial sort)
   std::vector<double> lag, penetration;  // per event; NaN = not detected
@@ -36,20 +38,96 @@ struct Counts {
     };
     return candidates == o.candidates && bound_candidates == o.bound_candidates && confirmed == o.confirmed &&
            false_positives == o.false_positives && unexpected == o.unexpected && counters == o.counters &&
-           rebuilds == o.rebuilds && same(lag, o.lag);
+           rebuilds == o.rebuilds && pair_checks == o.pair_checks && narrow_calls == o.narrow_calls &&
+           refreshes == o.refreshes && steps == o.steps && same(lag, o.lag);
   }
 };
 
+// Matches one confirmed contact of pair p, found by a narrow call over [t0, t1], with the
+// truth. A contact's time is the sample time (discrete) or the first contact in [t0, t1]
+// (continuous); its penetration is minus the narrow phase's signed distance.
+void match_contact(const RunInput& in, bool continuous, ccd::BodyPair p, const ccd::ContactResult& contact, double t0,
+                   double t1, Counts& c) {
+  const TruthIndex& truth = *in.truth;
+  // Times are matched with this slack: the truth is accurate to 1e-9 relative to T.
+  // A certified (rigid) truth widens it by its largest error.
+  const double slack = std::max(1e-9 * in.scene->horizon, in.truth_error);
+  const double when = contact.toi;
+  bool matched = false;
+  for (std::uint32_t e : truth.of_pair(p.a, p.b)) {
+    const ccd::ContactEvent& ev = truth.events()[e];
+    if (ev.exit < t0 - slack || ev.enter > t1 + slack) continue;
+    matched = true;
+    // Continuous: detected when confirmed in a step that contains its enter time.
+    // Discrete: detected at the first sample inside the event.
+    if (continuous && ev.enter < t0 - slack) continue;
+    if (std::isnan(c.lag[e])) {
+      // A continuous method confirms the pair from its first contact in the step on;
+      // an event that starts later in the same step (the pair was already touching
+      // at the step's start from an earlier event) is detected at its own start, where
+      // the same signed distance is evaluated.
+      const double at = continuous ? std::max(when, ev.enter) : when;
+      // Rigid pairs: the narrow phase's bound at its own time (the sphere formula would
+      // measure the enclosing spheres).
+      const bool spheres = !in.rigid || (in.rigid->kind(p.a) == ccd::ShapeKind::Sphere &&
+                                         in.rigid->kind(p.b) == ccd::ShapeKind::Sphere);
+      const double signed_distance = at == when || !spheres
+                                         ? contact.signed_distance
+                                         : ccd::sphere_signed_distance(*in.trajectories, p.a, p.b, at);
+      c.lag[e] = std::max(0.0, at - ev.enter);
+      c.penetration[e] = std::max(0.0, -signed_distance);
+    }
+  }
+  if (!matched) ++c.unexpected;
+}
+
+// A scheduled method: the earliest scheduler over the whole horizon, windows of at most dt.
+Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
+  const ccd::Trajectories& traj = *in.trajectories;
+  Counts c;
+  const std::size_t n_events = in.truth->events().size();
+  c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
+  c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
+  ccd::ScheduleOptions options;
+  options.window = dt;
+  options.stale = method.scheduler.options.number("stale");
+  options.align = method.scheduler.options.integer("align") != 0;
+  options.refresh_bodies = method.scheduler.options.integer("refresh_bodies") != 0;
+  options.rigid = in.rigid;
+  ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
+                                   method.broad_phase.make(), options);
+  std::vector<ccd::ScheduledContact> contacts;
+  ccd::StepTimes times;
+  const auto t_start = Clock::now();
+  cancelled = !scheduler.run(traj, in.scene->horizon, in.acceleration_bound, in.scene->box, contacts, &times, in.cancel);
+  c.total_s = seconds_since(t_start);
+  c.bound_s = times.bound;
+  c.broad_s = times.broad;
+  c.narrow_s = times.narrow;
+  const ccd::ScheduleStats& st = scheduler.stats();
+  c.candidates = st.candidates;
+  c.bound_candidates = st.passed;
+  c.confirmed = contacts.size();
+  c.false_positives = st.narrow_calls - contacts.size();
+  c.pair_checks = st.pair_checks;
+  c.narrow_calls = st.narrow_calls;
+  c.refreshes = st.refreshes;
+  c.steps = st.batches;
+  for (const ccd::ScheduledContact& sc : contacts) match_contact(in, true, sc.pair, sc.contact, sc.from, sc.to, c);
+  return c;
+}
+
 Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
+  if (method.scheduled()) return run_scheduled_once(in, method, dt, cancelled);
   const ccd::Trajectories& traj = *in.trajectories;
   const TruthIndex& truth = *in.truth;
   const double T = in.scene->horizon;
   const bool continuous = method.continuous();
-  // Times are matched with this slack: the truth is accurate to 1e-9 relative to T.
-  // A certified (rigid) truth widens it by its largest error.
-  const double slack = std::max(1e-9 * T, in.truth_error);
 
-  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make());
+  ccd::PipelineOptions options;
+  options.narrow_from_earliest = method.scheduler.options.integer("narrow_from_earliest") != 0;
+  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make(),
+                             ccd::narrow_table(), options);
   std::vector<ccd::BodyState> states;
   ccd::StepResult step;
   ccd::StateCursor cursor(traj);
@@ -98,38 +176,8 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
     c.confirmed += step.contacts.size();
     c.false_positives += step.passed.size() - step.contacts.size();
 
-    // Bookkeeping against the truth (not timed). A contact's time is the sample time
-    // (discrete) or the first contact in the step (continuous); its penetration is minus
-    // the narrow phase's signed distance.
-    for (const ccd::PairContact& pc : step.contacts) {
-      const ccd::BodyPair p = pc.pair;
-      const double when = pc.contact.toi;
-      bool matched = false;
-      for (std::uint32_t e : truth.of_pair(p.a, p.b)) {
-        const ccd::ContactEvent& ev = truth.events()[e];
-        if (ev.exit < t0 - slack || ev.enter > t1 + slack) continue;
-        matched = true;
-        // Continuous: detected when confirmed in a step that contains its enter time.
-        // Discrete: detected at the first sample inside the event.
-        if (continuous && ev.enter < t0 - slack) continue;
-        if (std::isnan(c.lag[e])) {
-          // A continuous method confirms the pair from its first contact in the step on;
-          // an event that starts later in the same step (the pair was already touching
-          // at the step's start from an earlier event) is detected at its own start, where
-          // the same signed distance is evaluated.
-          const double at = continuous ? std::max(when, ev.enter) : when;
-          // Rigid pairs: the narrow phase's bound at its own time (the sphere formula would
-          // measure the enclosing spheres).
-          const bool spheres = !in.rigid || (in.rigid->kind(p.a) == ccd::ShapeKind::Sphere &&
-                                             in.rigid->kind(p.b) == ccd::ShapeKind::Sphere);
-          const double signed_distance = at == when || !spheres ? pc.contact.signed_distance
-                                                                : ccd::sphere_signed_distance(traj, p.a, p.b, at);
-          c.lag[e] = std::max(0.0, at - ev.enter);
-          c.penetration[e] = std::max(0.0, -signed_distance);
-        }
-      }
-      if (!matched) ++c.unexpected;
-    }
+    // Bookkeeping against the truth (not timed).
+    for (const ccd::PairContact& pc : step.contacts) match_contact(in, continuous, pc.pair, pc.contact, t0, t1, c);
   }
   c.total_s = seconds_since(t_start);
   return c;
@@ -164,6 +212,7 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.conservative = method.continuous() && method.bound.info->conservative &&
                    (method.bound.info->knowledge != ccd::Knowledge::Bounded ||
                     in.acceleration_bound >= in.scene->max_acceleration());
+  r.scheduled = method.scheduled();
   r.dt = dt;
   r.hz = 1.0 / dt;
 
@@ -183,6 +232,10 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   const std::uint64_t samples = sample_count(T, dt);
   const std::uint64_t K = samples == 0 ? 0 : samples - 1;
   r.steps = samples == 0 ? 0 : r.continuous ? (double(K) * dt < T ? K + 1 : K) : samples;
+  if (r.scheduled) r.steps = c.steps;
+  r.pair_checks = c.pair_checks;
+  r.narrow_calls = c.narrow_calls;
+  r.refreshes = c.refreshes;
 
   const auto& events = in.truth->events();
   r.events = events.size();
@@ -290,6 +343,11 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
             {"unexpected_contacts", r.self_check_unexpected},
             {"undetected_sampled_events", r.self_check_undetected},
             {"counts_stable", r.counts_stable}}}};
+  if (r.scheduled) {
+    j["pair_checks"] = r.pair_checks;
+    j["narrow_calls"] = r.narrow_calls;
+    j["refreshes"] = r.refreshes;
+  }
   if (list_missed) {
     nlohmann::json missed = nlohmann::json::array();
     for (const MissedEvent& m : r.missed_events)

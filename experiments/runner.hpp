@@ -8,7 +8,11 @@
 //    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
 //  - a continuous method checks each step [t_k, t_{k+1}] (and the last partial step): an
 //    event is detected when the pair is confirmed by the exact narrow phase in a step
-//    that contains its enter time.
+//    that contains its enter time;
+//  - a scheduled method (BOUND/BROADPHASE@earliest) runs the earliest scheduler over the
+//    whole horizon with windows of at most dt (ccd/pipeline/earliest_scheduler.hpp): an
+//    event is detected when the pair is confirmed by a narrow call whose interval
+//    contains its enter time.
 #include "method.hpp"
 #include "truth_index.hpp"
 
@@ -85,6 +89,13 @@ struct RunRecord {
   std::vector<std::pair<std::string, std::uint64_t>> counters;
   std::uint64_t rebuilds = 0;          ///< steps at which the broad phase built its structure from scratch
                                        ///< (every step for brute, grid, hgrid, rtree)
+  /// Scheduled methods only (written when `scheduled`): bound pair tests, narrow-phase
+  /// calls and body bounds built (the first of each body included). `steps` is then the
+  /// number of refresh events, `false_positives` the narrow calls that found nothing.
+  bool scheduled = false;
+  std::uint64_t pair_checks = 0;
+  std::uint64_t narrow_calls = 0;
+  std::uint64_t refreshes = 0;
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   bool counts_stable = true;           ///< identical counts over all repeats

@@ -6,7 +6,7 @@ usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--
                                               [--ccdlab PATH]
 
 STUDY is one of: tunnelling, sap-coherence, equal-endpoints, grazing, precision,
-bound-violation, mixed-sizes, scaling. Draws STUDY-*.{png,...} into DIR (default
+bound-violation, mixed-sizes, scaling, scheduling. Draws STUDY-*.{png,...} into DIR (default
 results/studies/STUDY/plots), prints a Markdown summary of the key numbers on standard
 output, then each chart's path. Results files may come in any order: each study sorts
 them by its own variable (N, offset, ratio...), read from the results themselves.
@@ -26,7 +26,7 @@ import plot  # noqa: E402  (sets the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
 
 STUDIES = ("tunnelling", "sap-coherence", "equal-endpoints", "grazing", "precision",
-           "bound-violation", "mixed-sizes", "scaling")
+           "bound-violation", "mixed-sizes", "scaling", "scheduling")
 
 
 def fail(msg):
@@ -425,6 +425,83 @@ def bound_violation(results, outdir, formats):
     return out, save(fig, outdir, "bound-violation", formats)
 
 
+# ---------------------------------------------------------------------------- scheduling
+
+SCHEDULING_ORDER = ("sparse-gas", "dense-gas", "bullets", "swarm", "violation")
+
+
+def scheduling_key(res):
+    name = res["experiment"]["name"].replace("scheduling-", "")
+    return SCHEDULING_ORDER.index(name) if name in SCHEDULING_ORDER else len(SCHEDULING_ORDER)
+
+
+def pair_checks(r):
+    """Bound pair tests: counted by a scheduled method; every candidate for a fixed step."""
+    return r.get("pair_checks", r["candidates"])
+
+
+def narrow_calls(r):
+    """Narrow-phase calls: counted by a scheduled method; every passed pair for a fixed step."""
+    return r.get("narrow_calls", r["bound_candidates"])
+
+
+def cheapest(records):
+    """The cheapest record at zero misses (None when every one misses)."""
+    ok = [r for r in records if r["missed"] == 0 and r["continuous"]]
+    return min(ok, key=lambda r: r["seconds_per_simulated_second"]) if ok else None
+
+
+def scheduling(results, outdir, formats):
+    results = sorted(results, key=scheduling_key)
+    out = ["### scheduling: fixed steps against the earliest-contact scheduler", "",
+           "cheapest zero-miss record of each family (over methods and dt): seconds per simulated "
+           "second, pair checks (bound pair tests), narrow calls, bound refreshes", "",
+           "| scene | events | family | method | dt (s) | s / simulated s | pair checks | narrow calls | "
+           "refreshes | scheduler / fixed |", "|---|---|---|---|---|---|---|---|---|---|"]
+    main = [res for res in results if scheduling_key(res) < 4]
+    fig, axes = plt.subplots(1, max(1, len(main)), figsize=(4.6 * max(1, len(main)), 4.4), squeeze=False)
+    for ax, res in zip(axes[0], main):
+        name = res["experiment"]["name"].replace("scheduling-", "")
+        recs = [r for r in res["records"] if r["continuous"]]
+        fixed = cheapest([r for r in recs if "pair_checks" not in r])
+        sched = cheapest([r for r in recs if "pair_checks" in r])
+        for fam, r in (("fixed", fixed), ("@earliest", sched)):
+            if r is None:
+                out.append(f"| {name} | {res['truth']['events']} | {fam} | (every record misses) | | | | | | |")
+                continue
+            ratio = ""
+            if fam == "@earliest" and fixed is not None:
+                ratio = f"{r['seconds_per_simulated_second'] / fixed['seconds_per_simulated_second']:.2f}"
+            refreshes = r.get("refreshes", res["scene"]["bodies"] * r["steps"])
+            out.append(f"| {name} | {res['truth']['events']} | {fam} | {r['method']} | {fmt_dt(r['dt'])} | "
+                       f"{r['seconds_per_simulated_second']:.4g} | {pair_checks(r)} | {narrow_calls(r)} | "
+                       f"{refreshes} | {ratio} |")
+        for i, (m, rs) in enumerate(plot.by_method(recs).items()):
+            sched_m = "@earliest" in m
+            ax.plot([r["dt"] for r in rs], [r["seconds_per_simulated_second"] for r in rs], label=m,
+                    linestyle="-" if sched_m else "--", linewidth=1.3, markersize=4, **plot.style(i % 4))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("dt: step (fixed) or longest window (@earliest), s")
+        ax.set_ylabel("seconds per simulated second")
+        ax.set_title(f"{name}: {res['truth']['events']} events", fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+    legend(axes[0][-1], loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    paths = save(fig, outdir, "scheduling", formats)
+    for res in results:
+        if scheduling_key(res) != 4:
+            continue
+        ds = dts(res)
+        out += ["", f"#### {res['experiment']['name']}: acceleration_bound {res['experiment']['acceleration_bound_used']:g}"
+                f" (true maximum {source(res).get('max_acceleration', res['scene']['max_acceleration']):g}), "
+                f"missed events at dt = {' / '.join(fmt_dt(d) for d in ds)} s", "",
+                "| method | missed |", "|---|---|"]
+        for m in method_order([res]):
+            out.append(f"| {m} | " + " / ".join(str(record(res, m, d)["missed"]) for d in ds) + " |")
+    out += ["", self_check_line(results)]
+    return out, paths
+
+
 # ---------------------------------------------------------------------------- mixed-sizes / scaling
 
 def time_against(results, outdir, formats, stem, xkey, xlabel, title):
@@ -504,6 +581,8 @@ def main(argv=None):
         lines, paths = time_against(results, outdir, formats, "mixed-sizes",
                                     lambda r: r["scene"]["radius_max"] / r["scene"]["radius_min"],
                                     "r_max / r_min", "broad-phase time against the radius spread")
+    elif s == "scheduling":
+        lines, paths = scheduling(results, outdir, formats)
     else:
         lines, paths = time_against(results, outdir, formats, "scaling", lambda r: r["scene"]["bodies"],
                                     "bodies N", "broad-phase time against N")

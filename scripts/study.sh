@@ -14,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ccdlab=${CCDLAB:-$root/build/ccdlab}
 python=/usr/bin/python3
-studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling"
+studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling"
 
 usage() {
   echo "usage: scripts/study.sh NAME [--threads N] [--plot-only] [--publish]   (NAME: ${studies// /, })" >&2
@@ -78,6 +78,12 @@ if [[ $publish == 1 ]]; then
     cp "$p" "$root/docs/studies/"
     echo "published docs/studies/$(basename "$p")"
   done
+  if [[ $name == scheduling ]]; then
+    for f in sparse-gas bullets; do
+      cp "$out/scheduling-$f-plots/speed_accuracy.png" "$root/docs/studies/scheduling-$f-speed-accuracy.png"
+      echo "published docs/studies/scheduling-$f-speed-accuracy.png"
+    done
+  fi
   if [[ $name == tunnelling ]]; then
     cp "$out/tunnelling-plots/missed.png" "$root/docs/studies/tunnelling-missed.png"
     echo "published docs/studies/tunnelling-missed.png"

@@ -42,6 +42,12 @@ class BroadPhase {
   /// Writes the overlapping pairs (a < b, each once, any order) into `out`, clearing it
   /// first. Boxes must be finite with lo <= hi.
   virtual void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) = 0;
+  /// For a scheduler: the boxes of `moved` (distinct indices) changed since the last call;
+  /// writes every overlapping pair with at least one moved body (a < b, each once, any
+  /// order) into `out`, clearing it first. The default serves a large batch (a quarter of
+  /// the bodies or more) with find_pairs, filtered, and a small one by testing each moved
+  /// box against every box (linear per moved body; no structure to keep up to date).
+  virtual void update(std::span<const Aabb> boxes, std::span<const std::uint32_t> moved, std::vector<BodyPair>& out);
   virtual BroadPhaseStats stats() const { return {}; }
   /// The method's own counters for the last call (none by default); names are fixed per
   /// method, so a caller may sum them by name over frames.

@@ -1,5 +1,6 @@
 #include <ccd/pipeline/step_pipeline.hpp>
 
+#include <algorithm>
 #include <chrono>
 
 namespace ccd {
@@ -23,9 +24,10 @@ struct Stopwatch {
 }  // namespace
 
 StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
-                           const NarrowTable& table)
+                           const NarrowTable& table, PipelineOptions options)
     : bound_(std::move(bound)),
       knowledge_(knowledge),
+      options_(options),
       broad_(std::move(broad)),
       table_(&table),
       // Sphere scenes: the one kind pair is looked up once, here.
@@ -47,23 +49,26 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
 
   watch.start();
   out.passed.clear();
-  for (const BodyPair& p : out.candidates)
-    if (bound_->test(p.a, p.b).possible()) out.passed.push_back(p);
+  out.earliest.clear();
+  for (const BodyPair& p : out.candidates) {
+    const PairTest t = bound_->test(p.a, p.b);
+    if (t.possible()) {
+      out.passed.push_back(p);
+      out.earliest.push_back(t.earliest);
+    }
+  }
   watch.stop(local.bound);
 
   watch.start();
   out.contacts.clear();
-  const NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test(), rigid};
-  if (!rigid) {
-    for (const BodyPair& p : out.passed) {
-      const ContactResult c = narrow_(in, p.a, p.b);
-      if (c.found()) out.contacts.push_back({p, c});
-    }
-  } else {
-    for (const BodyPair& p : out.passed) {
-      const ContactResult c = table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b);
-      if (c.found()) out.contacts.push_back({p, c});
-    }
+  NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test(), rigid};
+  const bool from_earliest = options_.narrow_from_earliest && !sample_test();
+  for (std::size_t i = 0; i < out.passed.size(); ++i) {
+    const BodyPair p = out.passed[i];
+    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
+    // Sphere scenes: the one entry looked up once; rigid scenes: per pair of shape kinds.
+    const ContactResult c = rigid ? table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b) : narrow_(in, p.a, p.b);
+    if (c.found()) out.contacts.push_back({p, c});
   }
   watch.stop(local.narrow);
 

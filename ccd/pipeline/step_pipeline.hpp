@@ -18,8 +18,11 @@
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
 //     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
-// The narrow phase starts at t0 for every pair; PairTest::earliest is reported by the
-// bounds but not used to start it later.
+// The narrow phase starts at t0 for every pair by default. With
+// PipelineOptions::narrow_from_earliest it starts at the pair test's `earliest` instead
+// (no contact is possible before it while the bound's assumption holds, so a conservative
+// bound finds the same contacts; a bound whose assumption is violated, e.g. |a| > A for a
+// horn, may then miss a contact between t0 and `earliest` that the t0 start would find).
 #include <bounds/bound.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/motion/rigid_motion.hpp>
@@ -45,15 +48,22 @@ struct PairContact {
 struct StepResult {
   std::vector<BodyPair> candidates;   ///< broad-phase pairs
   std::vector<BodyPair> passed;       ///< of those, pairs the bound's test let through
+  std::vector<double> earliest;       ///< per passed pair, the test's earliest possible contact
   std::vector<PairContact> contacts;  ///< of those, pairs the narrow phase found in contact
   BroadPhaseStats broad_stats;        ///< the broad phase's stats for this step
+};
+
+struct PipelineOptions {
+  /// false: the narrow phase of every passed pair starts at the step start t0 (default);
+  /// true: at the pair test's `earliest` (continuous methods only; a sample test ignores it).
+  bool narrow_from_earliest = false;
 };
 
 class StepPipeline {
  public:
   /// `knowledge` is the bound's (Instant: sample tests; otherwise step queries).
   StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
-               const NarrowTable& table = narrow_table());
+               const NarrowTable& table = narrow_table(), PipelineOptions options = {});
 
   /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
   /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
@@ -71,6 +81,7 @@ class StepPipeline {
  private:
   std::unique_ptr<Bound> bound_;
   Knowledge knowledge_;
+  PipelineOptions options_;
   std::unique_ptr<BroadPhase> broad_;
   const NarrowTable* table_;
   NarrowEntry narrow_;

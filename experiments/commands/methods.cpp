@@ -24,8 +24,9 @@ int run_methods(std::span<const std::string> args) {
     std::cerr << "ccdlab methods: unexpected argument '" << args[0] << "' (see ccdlab methods --help)\n";
     return kExitBadInput;
   }
-  std::cout << "A method is BOUND/BROADPHASE, e.g. aabb/sap, capsule/grid, horn:4/sap; either half may set\n"
-               "its options as NAME:option=value,... (capsule/grid:cell=2, horn:pieces=8/sap).\n\nBounds:\n";
+  std::cout << "A method is BOUND/BROADPHASE[@SCHEDULER], e.g. aabb/sap, capsule/grid, horn:4/sap,\n"
+               "horn:4/grid@earliest; each part may set its options as NAME:option=value,...\n"
+               "(capsule/grid:cell=2, horn:pieces=8/sap, capsule/sap@earliest:stale=0.5).\n\nBounds:\n";
   std::cout << "  " << std::left << std::setw(18) << "name" << std::setw(9) << "knows" << std::setw(14)
             << "conservative" << "description\n";
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
@@ -44,7 +45,13 @@ int run_methods(std::span<const std::string> args) {
     std::cout << "  " << std::setw(18) << p.name << p.description << "\n";
     print_options(p.parameters);
   }
-  std::cout << "\n" << all_method_names().size() << " methods with default parameters (ccdlab methods --names).\n";
+  std::cout << "\nSchedulers (after @; none means fixed; earliest needs a space-time bound):\n";
+  for (const ccd::SchedulerInfo& x : ccd::scheduler_registry()) {
+    std::cout << "  " << std::setw(18) << x.name << x.description << "\n";
+    print_options(x.parameters);
+  }
+  std::cout << "\n" << all_method_names().size() << " methods with default parameters (ccdlab methods --names;\n"
+            << "each space-time one also runs as NAME@earliest).\n";
   return 0;
 }
 
@@ -54,9 +61,9 @@ extern const Command kMethodsCommand = {
     "methods", "list the bounds and broad phases that compose methods BOUND/BROADPHASE",
     "usage: ccdlab methods [--names]\n"
     "\n"
-    "Lists every bound (with what it may know and whether it is conservative) and every\n"
-    "broad phase, each with its options (default, unit, range). --names prints every\n"
-    "composed method name with default options, one per line.\n",
+    "Lists every bound (with what it may know and whether it is conservative), every\n"
+    "broad phase and every scheduler, each with its options (default, unit, range).\n"
+    "--names prints every composed fixed-step method name with default options, one per line.\n",
     run_methods};
 
 }  // namespace ccdlab

@@ -163,3 +163,105 @@ TEST_CASE("horn trapezoids contain bounded-acceleration motions", "[bounds][trap
   }
   CHECK(failed == 0);
 }
+
+TEST_CASE("trapezoid_sequence_overlap splits at the union of both bodies' breakpoints", "[bounds][trapezoid][windows]") {
+  // a: the unit box at rest over [0, 1], as two pieces split at 1/2.
+  const Trapezoid a0{0.0, 0.5, Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  const Trapezoid a1{0.5, 1.0, Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)};
+  const Trapezoid a[] = {a0, a1};
+  SECTION("b over a later window touches at its own end, t = 3/4") {
+    // b's lo face x goes from 3 at t = 1/4 to 1 at t = 3/4: touches a's face x = 1 at 3/4.
+    const Trapezoid b[] = {{0.25, 0.75, Vec3(3, 0, 0), Vec3(4, 1, 1), Vec3(1, 0, 0), Vec3(2, 1, 1)}};
+    const PairTest o = ccd::trapezoid_sequence_overlap(a, 2, b, 1);
+    REQUIRE(o.possible());
+    CHECK(o.earliest <= 0.75);  // never after the exact contact (dyadic, so exact in double)
+    CHECK(o.earliest >= 0.75 - 1e-14);
+    const PairTest swapped = ccd::trapezoid_sequence_overlap(b, 1, a, 2);
+    REQUIRE(swapped.possible());
+    CHECK(swapped.earliest <= 0.75);
+  }
+  SECTION("b stops 2^-20 short of a: disjoint") {
+    const Trapezoid b[] = {{0.25, 0.75, Vec3(3, 0, 0), Vec3(4, 1, 1), Vec3(1 + 0x1p-20, 0, 0), Vec3(2, 1, 1)}};
+    CHECK_FALSE(ccd::trapezoid_sequence_overlap(a, 2, b, 1).possible());
+  }
+  SECTION("contact exactly at a's breakpoint t = 1/2, inside b's piece") {
+    // lo face from 2 at 1/4 to 0 at 3/4: x = 1 at t = 1/2.
+    const Trapezoid b[] = {{0.25, 0.75, Vec3(2, 0, 0), Vec3(3, 1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)}};
+    const PairTest o = ccd::trapezoid_sequence_overlap(a, 2, b, 1);
+    REQUIRE(o.possible());
+    CHECK(o.earliest <= 0.5);
+    CHECK(o.earliest >= 0.5 - 1e-14);
+  }
+  SECTION("far from the origin (2^20): the same contact time") {
+    const Vec3 off(0x1p20, -0x1p20, 0x1p20);
+    const Trapezoid f0{0.0, 0.5, off, off + Vec3(1, 1, 1), off, off + Vec3(1, 1, 1)};
+    const Trapezoid f1{0.5, 1.0, off, off + Vec3(1, 1, 1), off, off + Vec3(1, 1, 1)};
+    const Trapezoid fa[] = {f0, f1};
+    const Trapezoid b[] = {{0.25, 0.75, off + Vec3(2, 0, 0), off + Vec3(3, 1, 1), off, off + Vec3(1, 1, 1)}};
+    const PairTest o = ccd::trapezoid_sequence_overlap(fa, 2, b, 1);
+    REQUIRE(o.possible());
+    CHECK(o.earliest <= 0.5);
+    CHECK(o.earliest >= 0.5 - 1e-9);
+  }
+  SECTION("windows that share no time: disjoint, even for coincident boxes") {
+    const Trapezoid b[] = {{2.0, 3.0, Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(0, 0, 0), Vec3(1, 1, 1)}};
+    CHECK_FALSE(ccd::trapezoid_sequence_overlap(a, 2, b, 1).possible());
+  }
+  SECTION("windows that share one instant: tested at that instant") {
+    const Trapezoid b[] = {{1.0, 2.0, Vec3(0.5, 0, 0), Vec3(1.5, 1, 1), Vec3(5, 0, 0), Vec3(6, 1, 1)}};
+    const PairTest o = ccd::trapezoid_sequence_overlap(a, 2, b, 1);
+    REQUIRE(o.possible());
+    CHECK(o.earliest == 1.0);
+  }
+}
+
+TEST_CASE("trapezoid_sequence_overlap agrees with dense sampling over different windows", "[bounds][trapezoid][windows]") {
+  // Random pieces over two overlapping windows with unrelated breakpoints (3 and 5 pieces):
+  // never disjoint where sampling finds an overlap, and never later than the first one.
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int possible = 0, disjoint = 0;
+  const auto sequence = [&](double t0, double t1, int m, std::vector<Trapezoid>& out) {
+    out.clear();
+    for (int j = 0; j < m; ++j) {
+      const double s0 = t0 + (t1 - t0) * j / m, s1 = j + 1 == m ? t1 : t0 + (t1 - t0) * (j + 1) / m;
+      Trapezoid z = random_trapezoid(rng, s0, s1);
+      if (j > 0) {  // contiguous: starts where the previous piece ends
+        z.lo0 = out.back().lo1;
+        z.hi0 = out.back().hi1;
+      }
+      out.push_back(z);
+    }
+  };
+  std::vector<Trapezoid> za, zb;
+  for (int i = 0; i < 3000; ++i) {
+    const double a0 = 0.25 * u(rng), b0 = 0.25 + 0.25 * u(rng);
+    sequence(a0, a0 + 0.5, 3, za);
+    sequence(b0, b0 + 0.5, 5, zb);
+    const PairTest o = ccd::trapezoid_sequence_overlap(za.data(), 3, zb.data(), 5);
+    const double lo = std::max(a0, b0), hi = std::min(a0 + 0.5, b0 + 0.5);
+    const auto box_at = [](const std::vector<Trapezoid>& z, double t) {
+      for (const Trapezoid& p : z)
+        if (t <= p.t1) return p.at(std::max(t, p.t0));
+      return z.back().at(z.back().t1);
+    };
+    double first_sampled = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 1000; ++k) {
+      const double t = lo + (hi - lo) * k / 1000;
+      if (gap(box_at(za, t), box_at(zb, t)) <= 0.0) {
+        first_sampled = t;
+        break;
+      }
+    }
+    if (!o.possible()) {
+      ++disjoint;
+      CHECK(first_sampled == std::numeric_limits<double>::infinity());
+    } else {
+      ++possible;
+      CHECK(o.earliest >= lo);
+      CHECK(o.earliest <= first_sampled);
+    }
+  }
+  CHECK(possible > 300);
+  CHECK(disjoint > 300);
+}

@@ -1,7 +1,8 @@
 // Every bound with every broad phase, through the runner, on small scenes with walls,
 // gravity and different accelerations: conservative methods miss nothing, discrete
 // methods detect exactly the events that contain a sample time, and every method's
-// self-check passes. Iterates the registries, so a new bound or broad phase is covered.
+// self-check passes. Iterates the registries, so a new bound or broad phase is covered;
+// every space-time method also runs under the earliest scheduler (BOUND/BROADPHASE@earliest).
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
 
@@ -34,7 +35,9 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
   in.truth = &truth;
   in.acceleration_bound = scene.max_acceleration();
   REQUIRE(!truth.events().empty());
-  for (const std::string& name : ccdlab::all_method_names()) {
+  std::vector<std::string> names = ccdlab::all_method_names();
+  for (const std::string& m : ccdlab::scheduled_method_names()) names.push_back(m);
+  for (const std::string& name : names) {
     INFO(c.generator << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
     CHECK(r.events == truth.events().size());

@@ -3,7 +3,8 @@
 // acceleration changes, t = 0 and T; tiny radii at 1024 m/s; clusters 1e5 from the
 // origin. The truth of each scene is checked against its hand-worked answer first; then
 // conservative methods miss nothing and every record's self-check is clean (one
-// definition of touching for truth, samples and narrow phase).
+// definition of touching for truth, samples and narrow phase). Space-time methods run
+// under both schedulers (fixed steps and @earliest).
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
 
@@ -131,7 +132,13 @@ TEST_CASE("exact scenes: conservative methods miss nothing, every self-check is 
     in.trajectories = &traj;
     in.truth = &truth;
     in.acceleration_bound = c.scene.max_acceleration();
-    for (const std::string& name : ccdlab::all_method_names()) {
+    std::vector<std::string> names = ccdlab::all_method_names();
+    for (const std::string& m : ccdlab::scheduled_method_names()) {
+      names.push_back(m);
+      names.push_back(m + ":stale=0.01");  // refined often: the pairs' own bounds
+      names.push_back(m + ":stale=0.01,align=0,refresh_bodies=1");  // bodies refreshed, each on its own clock
+    }
+    for (const std::string& name : names) {
       const ccdlab::MethodSpec m = ccdlab::parse_method(name);
       for (const double dt : {0.0625, 0.1, 0.03}) {
         INFO(c.name << " " << name << " dt " << dt);

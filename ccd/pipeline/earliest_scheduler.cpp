@@ -1,0 +1,235 @@
+#include <ccd/pipeline/earliest_scheduler.hpp>
+
+#include <ccd/motion/rigid_motion.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <queue>
+#include <stdexcept>
+
+namespace ccd {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
+
+struct Event {
+  double t;
+  Kind kind;
+  std::uint32_t a, b;    // a pair (a < b), or the expiring body in a (b == a)
+  std::uint32_t va, vb;  // the bodies' versions when the event was queued
+  double since;          // a check: when the bounds it came from start
+};
+
+// Min-heap order: earlier first; at equal times checks before expiries, then by bodies
+// (a deterministic order, whatever the insertion order).
+struct Later {
+  bool operator()(const Event& x, const Event& y) const {
+    if (x.t != y.t) return x.t > y.t;
+    if (x.kind != y.kind) return x.kind > y.kind;
+    if (x.a != y.a) return x.a > y.a;
+    return x.b > y.b;
+  }
+};
+
+// Adds the time since `from` to `into` when timing is on.
+struct Watch {
+  bool on;
+  Clock::time_point from{};
+  void start() {
+    if (on) from = Clock::now();
+  }
+  void stop(double& into) const {
+    if (on) into += std::chrono::duration<double>(Clock::now() - from).count();
+  }
+};
+
+}  // namespace
+
+EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_ptr<Bound> scratch,
+                                     Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
+                                     ScheduleOptions options, const NarrowTable& table)
+    : bound_(std::move(bound)),
+      scratch_(std::move(scratch)),
+      knowledge_(knowledge),
+      broad_(std::move(broad)),
+      options_(options),
+      narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)),
+      table_(&table) {
+  if (knowledge == Knowledge::Instant)
+    throw std::invalid_argument("the earliest scheduler needs a space-time bound (an instant bound has no window)");
+  if (!bound_ || !scratch_) throw std::invalid_argument("the earliest scheduler needs two bound instances");
+  if (!(options.window > 0.0)) throw std::invalid_argument("the earliest scheduler needs a window dt > 0");
+  if (!(options.stale > 0.0 && options.stale <= 1.0))
+    throw std::invalid_argument("the earliest scheduler needs stale in (0, 1]");
+}
+
+bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
+                            const std::optional<WallBox>& walls, std::vector<ScheduledContact>& contacts,
+                            StepTimes* times, const std::atomic<bool>* cancel) {
+  stats_ = {};
+  contacts.clear();
+  const std::size_t n = motion.size();
+  const double dt = options_.window;
+  const double T = horizon;
+  const double stale_age = options_.stale * dt;
+  const bool refine = options_.stale < 1.0;  // 1: never (a window may exceed dt by rounding)
+  StepTimes local;
+  Watch watch{times != nullptr};
+
+  std::vector<BodyState> states(n);
+  std::vector<std::uint32_t> version(n, 0);
+  std::vector<Aabb> boxes, scratch_boxes(n);  // the scratch instance holds refined pairs only
+  std::uint32_t pair_bodies[2];
+  std::vector<BodyPair> pairs;
+  std::vector<std::uint32_t> batch;
+  std::priority_queue<Event, std::vector<Event>, Later> queue;
+
+  StepContext ctx;
+  ctx.acceleration_bound = acceleration_bound;
+  ctx.walls = walls;
+  ctx.exact = knowledge_ == Knowledge::Exact ? &motion : nullptr;
+
+  const auto state_at = [&](std::uint32_t i, double t) {
+    states[i] = {motion.position(i, t), motion.velocity(i, t), motion.radius(i)};
+  };
+  // Tests the reported pairs and queues a check for each that may touch (not before now).
+  const auto test_pairs = [&](double now) {
+    for (const BodyPair& p : pairs) {
+      ++stats_.pair_checks;
+      const PairTest r = bound_->test(p.a, p.b);
+      if (!r.possible()) continue;
+      ++stats_.passed;
+      const double since = std::max(bound_->window(p.a).t0, bound_->window(p.b).t0);
+      queue.push({std::max(r.earliest, now), Kind::Check, p.a, p.b, version[p.a], version[p.b], since});
+    }
+  };
+  const auto queue_expiry = [&](std::uint32_t i, double w1) {
+    if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
+  };
+  // Refreshes the bodies of `batch` at time t over [t, min(t + dt, T)].
+  const auto refresh = [&](double t) {
+    ++stats_.batches;
+    stats_.refreshes += batch.size();
+    double w1 = t + dt;
+    if (options_.align) {  // the next grid time k dt > t (the product, as the fixed steps' times)
+      double k = std::floor(t / dt) + 1.0;
+      while (k > 1.0 && (k - 1.0) * dt > t) k -= 1.0;
+      while (k * dt <= t) k += 1.0;
+      w1 = k * dt;
+    }
+    w1 = std::min(w1, T);
+    watch.start();
+    for (const std::uint32_t i : batch) state_at(i, t);
+    ctx.t0 = t;
+    ctx.t1 = w1;
+    ctx.start = states;
+    bound_->refresh(ctx, batch, boxes);
+    watch.stop(local.bound);
+    for (const std::uint32_t i : batch) {
+      ++version[i];
+      queue_expiry(i, w1);
+    }
+    watch.start();
+    broad_->update(boxes, batch, pairs);
+    watch.stop(local.broad);
+    stats_.candidates += pairs.size();
+    watch.start();
+    test_pairs(t);
+    watch.stop(local.bound);
+  };
+
+  // Every body's first window [0, min(dt, T)].
+  {
+    watch.start();
+    for (std::uint32_t i = 0; i < n; ++i) state_at(i, 0.0);
+    ctx.t0 = 0.0;
+    ctx.t1 = std::min(dt, T);
+    ctx.start = states;
+    bound_->prepare(ctx, boxes);
+    watch.stop(local.bound);
+    stats_.refreshes += n;
+    ++stats_.batches;
+    watch.start();
+    broad_->find_pairs(boxes, pairs);
+    watch.stop(local.broad);
+    stats_.candidates += pairs.size();
+    watch.start();
+    test_pairs(0.0);
+    watch.stop(local.bound);
+    for (std::uint32_t i = 0; i < n; ++i) queue_expiry(i, ctx.t1);
+  }
+
+  bool finished = true;
+  std::uint64_t popped = 0;
+  while (!queue.empty()) {
+    if (cancel && (++popped & 1023u) == 0 && cancel->load(std::memory_order_relaxed)) {
+      finished = false;
+      break;
+    }
+    const Event e = queue.top();
+    queue.pop();
+    if (e.kind == Kind::Expiry) {
+      if (version[e.a] != e.va) continue;
+      batch.assign(1, e.a);
+      while (!queue.empty() && queue.top().kind == Kind::Expiry && queue.top().t == e.t) {
+        const Event x = queue.top();
+        queue.pop();
+        if (version[x.a] == x.va) batch.push_back(x.a);
+      }
+      refresh(e.t);
+      continue;
+    }
+    if (version[e.a] != e.va || version[e.b] != e.vb) continue;  // queued from an older bound
+    const Window wa = bound_->window(e.a);
+    const Window wb = bound_->window(e.b);
+    const double to = std::min(wa.t1, wb.t1);
+    if (options_.refresh_bodies) {
+      batch.clear();
+      if (refine && e.t - wa.t0 > stale_age) batch.push_back(e.a);
+      if (refine && e.t - wb.t0 > stale_age) batch.push_back(e.b);
+      if (!batch.empty()) {
+        refresh(e.t);
+        continue;
+      }
+    } else if (refine && e.t - e.since > stale_age) {
+      // The pair's own bounds from now to the end of the common window.
+      watch.start();
+      pair_bodies[0] = e.a;
+      pair_bodies[1] = e.b;
+      state_at(e.a, e.t);
+      state_at(e.b, e.t);
+      ctx.t0 = e.t;
+      ctx.t1 = to;
+      ctx.start = states;
+      scratch_->refresh(ctx, pair_bodies, scratch_boxes);
+      stats_.refreshes += 2;
+      ++stats_.pair_checks;
+      const PairTest r = scratch_->test(e.a, e.b);
+      watch.stop(local.bound);
+      if (r.possible()) {
+        ++stats_.passed;
+        queue.push({std::max(r.earliest, e.t), Kind::Check, e.a, e.b, e.va, e.vb, e.t});
+      }
+      continue;
+    }
+    ++stats_.narrow_calls;
+    const RigidMotion* rigid = options_.rigid;
+    const NarrowInput in{&motion, states, {}, e.t, to, false, rigid};
+    watch.start();
+    const ContactResult c =
+        rigid ? table_->find(rigid->kind(e.a), rigid->kind(e.b))(in, e.a, e.b) : narrow_(in, e.a, e.b);
+    watch.stop(local.narrow);
+    if (c.found()) contacts.push_back({{e.a, e.b}, c, e.t, to});
+  }
+  if (times) {
+    times->bound += local.bound;
+    times->broad += local.broad;
+    times->narrow += local.narrow;
+  }
+  return finished;
+}
+
+}  // namespace ccd

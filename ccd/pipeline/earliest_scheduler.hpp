@@ -1,0 +1,110 @@
+#pragma once
+// Hubbard's earliest-contact scheduling (Hubbard 1995; Mirtich's Timewarp; kinetic sweep
+// and prune): the `earliest` scheduler of ccd/pipeline/scheduler_registry.hpp. A pair is
+// looked at again only at the earliest time its bounds allow contact, so far-apart pairs
+// cost nothing for many windows.
+//
+// State: every body i has a bound over its own window [w0_i, w1_i] (w1_i = min(w0_i + dt,
+// T), or with `align` the next multiple of dt after w0_i), built from its state at w0_i
+// (Bound::refresh), and its box in the broad phase. A
+// priority queue holds two kinds of events, in time order (pair checks before expiries at
+// equal times):
+//  - expiry of body i at w1_i: all bodies expiring at that time refresh their bounds over
+//    their next windows, the broad phase updates only those (BroadPhase::update), and
+//    every pair it reports is tested (Bound::test over the common part of both windows);
+//    a pair that may touch gets a check at its `earliest`;
+//  - check of pair (a, b) at t: when the bounds the check came from are older than
+//    `stale` x dt, they are first rebuilt at t (Hubbard's refinement: a fresh bound is
+//    tight near t) and the pair re-tested, which gives a later check or none; otherwise
+//    the narrow phase runs from t to the end of the common window. The refinement builds
+//    the pair's own bounds from t to the end of the common window in a second instance of
+//    the bound (default: nothing else changes), or, with `refresh_bodies`, refreshes the
+//    two bodies' bounds themselves (their windows then start at t, every pair of theirs is
+//    re-tested, and windows of different bodies differ). Every refresh of a body bumps its
+//    version, so queued checks made from its old bound are dropped when they come up.
+// Coverage (why nothing is missed while the bound's assumption holds): each pair's time is
+// tiled by the common windows of its bodies' bounds; each common window is examined when
+// its later-starting bound is built (broad phase, then pair test), no contact is possible
+// in it before the test's `earliest`, and from there the narrow phase covers the rest of
+// it, or a refinement covers the rest of it from the check time on. A refinement advances
+// the age of the pair's bounds by at least stale x dt, so a pair is refined at most
+// T / (stale dt) times.
+// Contacts are reported with the narrow call's interval [from, to]: the runner credits
+// the events of the pair that start in it (as a fixed step credits the events that start
+// in the step).
+#include <bounds/bound.hpp>
+#include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/narrow/narrow_table.hpp>
+#include <ccd/pipeline/step_pipeline.hpp>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace ccd {
+
+struct ScheduleOptions {
+  double window = 0.0;  ///< dt: the longest window a bound covers (seconds, > 0)
+  double stale = 0.25;  ///< refinement threshold, a fraction of dt in (0, 1]; 1: never refine
+  /// true: a window refreshed at t ends at the next multiple of dt after t (so bodies
+  /// refined at different times still expire together and the broad phase updates them
+  /// in one batch); false: at t + dt (every body on its own clock).
+  bool align = true;
+  /// false: a refinement builds the pair's own bounds (a second bound instance); true: it
+  /// refreshes the two bodies' bounds, with a broad-phase update and a re-test of their pairs.
+  bool refresh_bodies = false;
+  /// Rigid scenes: shapes and spins, so that the narrow phase is looked up per pair of shape
+  /// kinds (as in StepPipeline); null for sphere scenes.
+  const RigidMotion* rigid = nullptr;
+};
+
+struct ScheduledContact {
+  BodyPair pair;
+  ContactResult contact;  ///< Hit or Overlapping: first contact in [from, to]
+  double from = 0.0;      ///< the narrow call's interval
+  double to = 0.0;
+};
+
+struct ScheduleStats {
+  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls)
+  std::uint64_t passed = 0;        ///< of those, Possible
+  std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
+  std::uint64_t refreshes = 0;     ///< body bounds built (the first one of every body and the
+                                   ///< pair refinements' included)
+  std::uint64_t candidates = 0;    ///< pairs the broad phase reported, summed over updates
+  std::uint64_t batches = 0;       ///< distinct refresh events (times at which bounds were rebuilt)
+};
+
+class EarliestScheduler {
+ public:
+  /// `bound` and `scratch` are two instances of the same bound (`scratch` holds the pairs'
+  /// refined bounds); `knowledge` is theirs; an Instant bound has no window
+  /// (std::invalid_argument).
+  EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_ptr<Bound> scratch, Knowledge knowledge,
+                    std::unique_ptr<BroadPhase> broad, ScheduleOptions options,
+                    const NarrowTable& table = narrow_table());
+
+  /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
+  /// order the checks ran. Adds stage times to `*times` when given. Stops early (returns
+  /// false) when `*cancel` becomes true.
+  bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
+           std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr,
+           const std::atomic<bool>* cancel = nullptr);
+
+  const ScheduleStats& stats() const { return stats_; }
+  const Bound& bound() const { return *bound_; }
+
+ private:
+  std::unique_ptr<Bound> bound_;
+  std::unique_ptr<Bound> scratch_;
+  Knowledge knowledge_;
+  std::unique_ptr<BroadPhase> broad_;
+  ScheduleOptions options_;
+  NarrowEntry narrow_;
+  const NarrowTable* table_;
+  ScheduleStats stats_;
+};
+
+}  // namespace ccd

@@ -1,0 +1,73 @@
+#include <ccd/pipeline/scheduler_registry.hpp>
+
+#include <stdexcept>
+#include <string>
+
+namespace ccd {
+namespace {
+
+constexpr ParameterSpec kFixedParameters[] = {
+    {"narrow_from_earliest", 0.0,
+     "1: the narrow phase starts at the bound test's earliest possible contact instead of the step start",
+     ParameterKind::Integer, {0.0, 1.0}},
+};
+constexpr ParameterSpec kEarliestParameters[] = {
+    {"stale", 0.25,
+     "a due pair check whose bounds are older than stale x dt first rebuilds them at the check time "
+     "(Hubbard's refinement); 1: never, the narrow phase runs at once",
+     ParameterKind::Real, {0.0, 1.0, true, false}},
+    {"align", 1.0,
+     "1: a refreshed window ends at the next multiple of dt, so bodies expire together; 0: at its start + dt",
+     ParameterKind::Integer, {0.0, 1.0}},
+    {"refresh_bodies", 0.0,
+     "0: a refinement builds the pair's own bounds; 1: it refreshes both bodies' bounds (broad-phase update, "
+     "every pair of theirs re-tested)",
+     ParameterKind::Integer, {0.0, 1.0}},
+};
+
+const SchedulerInfo kSchedulers[] = {
+    {"fixed", "fixed steps of dt: every bound, every candidate pair, every step", kFixedParameters},
+    {"earliest",
+     "per-pair checks at the earliest possible contact, per-body windows of at most dt refreshed one by one",
+     kEarliestParameters},
+};
+
+std::string valid_names() {
+  std::string s;
+  for (const SchedulerInfo& x : kSchedulers) s += (s.empty() ? "" : ", ") + std::string(x.name);
+  return s;
+}
+
+std::string valid_options(const SchedulerInfo& info) {
+  std::string s = "valid: ";
+  for (const ParameterSpec& p : info.parameters) s += (s.size() > 7 ? ", " : "") + describe_parameter(p);
+  return s;
+}
+
+}  // namespace
+
+std::span<const SchedulerInfo> scheduler_registry() { return kSchedulers; }
+
+bool SchedulerSpec::earliest() const { return info && info->name == "earliest"; }
+
+SchedulerSpec parse_scheduler(std::string_view spec) {
+  const std::size_t colon = spec.find(':');
+  const std::string_view name = spec.substr(0, colon);
+  const SchedulerInfo* info = nullptr;
+  for (const SchedulerInfo& x : kSchedulers)
+    if (x.name == name) info = &x;
+  if (!info)
+    throw std::invalid_argument("unknown scheduler '" + std::string(name) + "'; valid schedulers: " + valid_names());
+  if (colon == std::string_view::npos) return {info, resolve_parameters(info->parameters, {})};
+  try {
+    return {info, resolve_parameters(info->parameters,
+                                     option_values_from_text(spec.substr(colon + 1), info->parameters[0].name))};
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("scheduler '" + std::string(spec) + "': " + e.what() + " (" + valid_options(*info) +
+                                ")");
+  }
+}
+
+SchedulerSpec default_scheduler() { return parse_scheduler("fixed"); }
+
+}  // namespace ccd

@@ -1,0 +1,159 @@
+// The earliest scheduler on its own (the runner's zero-miss tests run it on every scene
+// family through `BOUND/BROADPHASE@earliest`): every contact event of the exact truth is
+// found by a narrow call whose interval contains its start, for every option; far pairs
+// cost no check; an approaching pair is looked at only when it can touch; the refinement
+// terminates on a grazing pair.
+#include <bounds/registry.hpp>
+#include <ccd/broad_phase/registry.hpp>
+#include <ccd/pipeline/earliest_scheduler.hpp>
+#include <ccd/truth/ground_truth.hpp>
+#include <experiments/generators/registry.hpp>
+
+#include <tests/ccd/scene/body_builder.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+using ccd::Vec3;
+
+namespace {
+
+ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
+                            bool align = true, bool refresh_bodies = false) {
+  const ccd::BoundSpec b = ccd::parse_bound(bound);
+  ccd::ScheduleOptions o;
+  o.window = dt;
+  o.stale = stale;
+  o.align = align;
+  o.refresh_bodies = refresh_bodies;
+  return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
+}
+
+// Events (enter > 0) with no contact of their pair whose narrow interval contains enter.
+long undetected(const std::vector<ccd::ContactEvent>& events, const std::vector<ccd::ScheduledContact>& contacts,
+                double slack) {
+  long missed = 0;
+  for (const ccd::ContactEvent& e : events) {
+    if (e.enter == 0.0) continue;
+    bool found = false;
+    for (const ccd::ScheduledContact& c : contacts)
+      found = found || (c.pair.a == e.a && c.pair.b == e.b && c.from - slack <= e.enter && e.enter <= c.to + slack);
+    missed += !found;
+  }
+  return missed;
+}
+
+}  // namespace
+
+TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipeline][scheduler][zero_miss]") {
+  struct Scene {
+    const char* generator;
+    nlohmann::json params;
+  };
+  const Scene s = GENERATE(Scene{"gas", {{"bodies", 150}, {"seed", 3}, {"speed_max", 30}, {"horizon", 0.5}}},
+                           Scene{"rain", {{"bodies", 120}, {"seed", 12}, {"horizon", 1.0}, {"aspect", 1}}},
+                           Scene{"bullets", {{"bodies", 80}, {"seed", 14}, {"bullets", 8}, {"horizon", 0.5}}});
+  const ccd::Scene scene = ccdlab::generate_scene(s.generator, s.params);
+  const ccd::Trajectories traj(scene);
+  const auto events = ccd::compute_truth(traj);
+  INFO(s.generator << ": " << events.size() << " events");
+  REQUIRE(events.size() > 5);
+  const double A = scene.max_acceleration();
+  for (const char* bound : {"horn:4", "capsule", "horn_sat:3", "swept_aabb", "enclosing_sphere"}) {
+    for (const double stale : {0.01, 0.25, 1.0}) {
+      for (const int mode : {0, 1, 2}) {  // pair refinement; body refreshes aligned; on own clocks
+        const bool align = mode != 2, refresh_bodies = mode != 0;
+        for (const double dt : {0.05, 0.3}) {  // 0.3 does not divide the horizon
+          INFO(s.generator << " " << bound << " stale " << stale << " mode " << mode << " dt " << dt);
+          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align, refresh_bodies);
+          std::vector<ccd::ScheduledContact> contacts;
+          REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
+          CHECK(undetected(events, contacts, 1e-9 * scene.horizon) == 0);
+          const ccd::ScheduleStats& st = sched.stats();
+          CHECK(st.passed <= st.pair_checks);
+          CHECK(st.refreshes >= traj.size());
+          for (const ccd::ScheduledContact& c : contacts) {
+            CHECK(c.from <= c.contact.toi);
+            CHECK(c.contact.toi <= c.to);
+          }
+          if (stale == 1.0 && align) {
+            // No refinement: every body refreshes at every window, as fixed steps would.
+            const double windows = std::ceil(scene.horizon / dt);
+            CHECK(st.refreshes == traj.size() * static_cast<std::uint64_t>(windows));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipeline][scheduler]") {
+  // (0, 1) head-on along x at relative speed 4, surfaces 3 apart at t = 0: they touch at
+  // t = 3/4 exactly (dyadic). Bodies 2 to 5 rest, 1000 away from everything.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(4, 0, 0), Vec3(-2, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(1000, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(2000, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(-1000, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 1000, 0)));
+  const ccd::Trajectories traj(s);
+  for (const char* bound : {"horn:4", "capsule"}) {
+   for (const bool refresh_bodies : {false, true}) {
+    INFO(bound << " refresh_bodies " << refresh_bodies);
+    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.25, true, refresh_bodies);
+    std::vector<ccd::ScheduledContact> contacts;
+    REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
+    REQUIRE(contacts.size() == 1);
+    CHECK(contacts[0].pair == ccd::BodyPair{0, 1});
+    CHECK(contacts[0].contact.toi == 0.75);
+    // One narrow call, at the refined check, no earlier than half the way in.
+    CHECK(sched.stats().narrow_calls == 1);
+    CHECK(contacts[0].from >= 0.5);
+    CHECK(contacts[0].from <= 0.75);
+    // The far bodies were never paired: only (0, 1) was tested (at the start and after
+    // each refinement).
+    CHECK(sched.stats().pair_checks <= 4);
+    if (refresh_bodies) CHECK(sched.stats().candidates == sched.stats().pair_checks);
+    else CHECK(sched.stats().candidates == 1);  // refinements re-test the pair alone
+   }
+  }
+}
+
+TEST_CASE("the refinement terminates on a grazing pair", "[pipeline][scheduler]") {
+  // Tangent at t = 1/2 (dyadic: y offset exactly r_a + r_b): a bound's earliest creeps up
+  // on 1/2 without reaching it; each refinement must advance a window by stale x dt.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(-1, 0, 0), Vec3(2, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(1, 1, 0), Vec3(-2, 0, 0)));
+  const ccd::Trajectories traj(s);
+  for (const char* bound : {"horn:4", "horn_sat:4", "capsule", "swept_aabb", "enclosing_sphere"}) {
+   for (const bool refresh_bodies : {false, true}) {
+    INFO(bound << " refresh_bodies " << refresh_bodies);
+    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.01, true, refresh_bodies);
+    std::vector<ccd::ScheduledContact> contacts;
+    REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
+    REQUIRE(contacts.size() == 1);
+    CHECK(contacts[0].contact.toi == Approx(0.5).margin(1e-7));
+    CHECK(sched.stats().refreshes <= 2 + 2 * 100);  // at most 1 / stale refinements per body
+   }
+  }
+}
+
+TEST_CASE("the earliest scheduler refuses what it cannot run", "[pipeline][scheduler]") {
+  const ccd::BoundSpec sphere = ccd::parse_bound("sphere");
+  ccd::ScheduleOptions o;
+  o.window = 0.1;
+  CHECK_THROWS_AS(ccd::EarliestScheduler(sphere.make(), sphere.make(), sphere.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
+                  std::invalid_argument);
+  const ccd::BoundSpec capsule = ccd::parse_bound("capsule");
+  o.window = 0.0;
+  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
+                  std::invalid_argument);
+}

@@ -1,0 +1,32 @@
+#include <ccd/pipeline/scheduler_registry.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <stdexcept>
+#include <string>
+
+TEST_CASE("parse_scheduler resolves names and options", "[pipeline][scheduler][registry]") {
+  const ccd::SchedulerSpec fixed = ccd::parse_scheduler("fixed");
+  CHECK_FALSE(fixed.earliest());
+  CHECK(fixed.options.integer("narrow_from_earliest") == 0);
+  CHECK(ccd::default_scheduler().info == fixed.info);
+  const ccd::SchedulerSpec e = ccd::parse_scheduler("earliest");
+  CHECK(e.earliest());
+  CHECK(e.options.number("stale") == 0.25);
+  CHECK(e.options.integer("align") == 1);
+  CHECK(ccd::parse_scheduler("earliest:0.5").options.number("stale") == 0.5);  // first option
+  CHECK(ccd::parse_scheduler("earliest:stale=1,align=0").options.integer("align") == 0);
+  CHECK(ccd::parse_scheduler("fixed:narrow_from_earliest=1").options.integer("narrow_from_earliest") == 1);
+  SECTION("bad names and values name the part and list the valid ones") {
+    try {
+      ccd::parse_scheduler("hubbard");
+      FAIL("accepted");
+    } catch (const std::invalid_argument& err) {
+      CHECK(std::string(err.what()).find("valid schedulers: fixed, earliest") != std::string::npos);
+    }
+    CHECK_THROWS_AS(ccd::parse_scheduler("earliest:stale=0"), std::invalid_argument);  // (0, 1]
+    CHECK_THROWS_AS(ccd::parse_scheduler("earliest:stale=1.5"), std::invalid_argument);
+    CHECK_THROWS_AS(ccd::parse_scheduler("earliest:align=2"), std::invalid_argument);
+    CHECK_THROWS_AS(ccd::parse_scheduler("fixed:stale=0.5"), std::invalid_argument);
+  }
+}
