@@ -87,9 +87,8 @@ BoundSpec parse_bound(std::string_view spec) {
   if (!info) {
     std::vector<std::string_view> names;
     for (const BoundInfo& b : kBounds) names.push_back(b.name);
-    const std::string near = nearest_name(name, names);
-    throw std::invalid_argument("unknown bound '" + std::string(name) + "' in '" + std::string(spec) + "'" +
-                                (near.empty() ? "" : " (did you mean \"" + near + "\"?)") +
+      throw std::invalid_argument("unknown bound '" + std::string(name) + "' in '" + std::string(spec) + "'" +
+                                did_you_mean(name, names) +
                                 "; valid bounds: " + valid_names());
   }
   if (colon == std::string_view::npos) return {info, resolve_parameters(info->parameters, {})};

@@ -94,9 +94,8 @@ const BroadPhaseInfo& find_broad_phase(std::string_view name) {
     if (info.name == name) return info;
   std::vector<std::string_view> names;
   for (const BroadPhaseInfo& info : kBroadPhases) names.push_back(info.name);
-  const std::string near = nearest_name(name, names);
   throw std::invalid_argument("unknown broad phase '" + std::string(name) + "'" +
-                              (near.empty() ? "" : " (did you mean \"" + near + "\"?)") + " (valid: " +
+                              did_you_mean(name, names) + " (valid: " +
                               valid_names() + ")");
 }
 

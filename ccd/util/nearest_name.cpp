@@ -40,9 +40,13 @@ std::string nearest_name(std::string_view name, std::span<const std::string_view
   return best;
 }
 
-std::string suggestion(std::string_view name, std::span<const std::string_view> candidates) {
+std::string did_you_mean(std::string_view name, std::span<const std::string_view> candidates) {
   const std::string near = nearest_name(name, candidates);
-  if (!near.empty()) return " (did you mean \"" + near + "\"?)";
+  return near.empty() ? std::string() : " (did you mean \"" + near + "\"?)";
+}
+
+std::string suggestion(std::string_view name, std::span<const std::string_view> candidates) {
+  if (std::string near = did_you_mean(name, candidates); !near.empty()) return near;
   std::string known;
   for (std::string_view c : candidates) known += (known.empty() ? "" : ", ") + std::string(c);
   return " (known: " + known + ")";

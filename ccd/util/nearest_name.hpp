@@ -14,6 +14,9 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 /// names up to 4 characters, 2 up to 8, else a third of the length); empty otherwise.
 std::string nearest_name(std::string_view name, std::span<const std::string_view> candidates);
 
+/// " (did you mean \"x\"?)" for the nearest candidate, or "" when none is near.
+std::string did_you_mean(std::string_view name, std::span<const std::string_view> candidates);
+
 /// " (did you mean \"x\"?)" for the nearest candidate, or " (known: a, b, c)" when none is near.
 std::string suggestion(std::string_view name, std::span<const std::string_view> candidates);
 

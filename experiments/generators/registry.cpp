@@ -36,9 +36,8 @@ const Generator& generator_named(std::string_view name) {
   for (const Generator& g : generators()) valid += (valid.empty() ? "" : ", ") + std::string(g.name);
   std::vector<std::string_view> names;
   for (const Generator& g : generators()) names.push_back(g.name);
-  const std::string near = ccd::nearest_name(name, names);
   throw std::invalid_argument("unknown generator '" + std::string(name) + "'" +
-                              (near.empty() ? "" : " (did you mean \"" + near + "\"?)") + "; valid generators: " + valid);
+                              ccd::did_you_mean(name, names) + "; valid generators: " + valid);
 }
 
 namespace {

@@ -34,4 +34,6 @@ TEST_CASE("nearest_name suggests only a near name, the nearest one", "[util]") {
   CHECK(nearest_name("xy", short_names).empty());
   CHECK(ccd::suggestion("velocty", fields) == R"( (did you mean "velocity"?))");
   CHECK(ccd::suggestion("xy", short_names) == " (known: dt, hz)");
+  CHECK(ccd::did_you_mean("velocty", fields) == R"( (did you mean "velocity"?))");
+  CHECK(ccd::did_you_mean("xy", short_names).empty());
 }
