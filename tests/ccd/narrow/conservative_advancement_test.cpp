@@ -5,6 +5,8 @@
 #include <ccd/narrow/narrow_table.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 
+#include "../scene/rigid_scenes.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -32,21 +34,10 @@ struct World {
   }
 };
 
-// A stick (half length 1, radius 1/16) at the origin spinning about z at `omega`, and a
-// sphere of radius 1/8 resting at (0, 3/4, 0): no translation at all.
+// The spinning stick and resting ball of rigid_scenes.hpp, over 4 s.
 World spinning_stick(double omega, std::vector<ccd::AngularVelocityChange> changes = {}) {
   World w;
-  w.scene.horizon = 4.0;
-  w.scene.shapes.push_back(ccd::make_capsule_shape(1.0, 1.0 / 16, "stick"));
-  ccd::RigidBody stick;
-  stick.shape = 0;
-  stick.angular_velocity = Vec3(0, 0, omega);
-  stick.angular_velocity_changes = std::move(changes);
-  w.scene.add_rigid_body(ccd::Body{}, stick);
-  ccd::Body ball;
-  ball.radius = 1.0 / 8;
-  ball.position = Vec3(0, 0.75, 0);
-  w.scene.add_rigid_body(ball, ccd::RigidBody{});
+  w.scene = ccd::test::spinning_stick_scene(omega, 4.0, std::move(changes));
   w.build();
   return w;
 }

@@ -3,6 +3,8 @@
 // against the exact sphere solver.
 #include <ccd/truth/rigid_truth.hpp>
 
+#include "../scene/rigid_scenes.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
@@ -22,22 +24,10 @@ struct World {
   }
 };
 
-// A stick (half length 1, radius 1/16) at the origin spinning about z, and a ball of radius
-// 1/8 resting at (0, 3/4, 0). The ball's centre is 3/4 |cos(theta)| from the stick's axis
-// and projects inside the segment, so the pair is in contact while |cos(theta)| <= 1/4.
+// The spinning stick and resting ball of rigid_scenes.hpp: in contact while |cos(theta)| <= 1/4.
 World spinning_stick(double omega, double horizon, std::vector<ccd::AngularVelocityChange> changes = {}) {
   World w;
-  w.scene.horizon = horizon;
-  w.scene.shapes.push_back(ccd::make_capsule_shape(1.0, 1.0 / 16, "stick"));
-  ccd::RigidBody stick;
-  stick.shape = 0;
-  stick.angular_velocity = Vec3(0, 0, omega);
-  stick.angular_velocity_changes = std::move(changes);
-  w.scene.add_rigid_body(ccd::Body{}, stick);
-  ccd::Body ball;
-  ball.radius = 1.0 / 8;
-  ball.position = Vec3(0, 0.75, 0);
-  w.scene.add_rigid_body(ball, ccd::RigidBody{});
+  w.scene = ccd::test::spinning_stick_scene(omega, horizon, std::move(changes));
   return w;
 }
 
