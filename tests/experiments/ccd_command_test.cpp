@@ -1,39 +1,22 @@
 // `ccdlab ccd` on the shipped hard query files: zero false negatives, results equal to the
 // file's expected column (decided exactly), JSON written atomically, bad input exit 2.
+#include "cli_support.hpp"
+
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+using ccdlab::test::Folder;
+
 namespace {
 
-struct Folder {
-  fs::path path;
-  Folder() {
-    std::string tmpl = (fs::temp_directory_path() / "ccdlab-ccd-test-XXXXXX").string();
-    path = ::mkdtemp(tmpl.data());
-  }
-  ~Folder() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
-
-int run_ccdlab(const std::string& args, const Folder& dir, std::string* out = nullptr, std::string* err = nullptr) {
-  const std::string o = dir / "stdout.txt", e = dir / "stderr.txt";
-  const int rc = std::system((std::string(CCDLAB_BINARY) + " ccd " + args + " >" + o + " 2>" + e).c_str());
-  auto slurp = [](const std::string& p) {
-    std::ifstream in(p);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  if (out) *out = slurp(o);
-  if (err) *err = slurp(e);
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+int run_ccd(const std::string& args, const Folder& dir, std::string* out = nullptr, std::string* err = nullptr) {
+  return ccdlab::test::run_ccdlab("ccd " + args, dir, out, err);
 }
 
 std::string data(const std::string& name) { return std::string(CCDLAB_SOURCE_DIR) + "/data/ccd/" + name; }
@@ -46,7 +29,7 @@ TEST_CASE("ccdlab ccd runs the shipped hard query files without a miss", "[cloth
     INFO(kind);
     const std::string file = data("hard_" + kind + ".csv");
     std::string out;
-    REQUIRE(run_ccdlab(file + " --kind " + kind + " -o " + (dir / "r.json"), dir, &out) == 0);
+    REQUIRE(run_ccd(file + " --kind " + kind + " -o " + (dir / "r.json"), dir, &out) == 0);
     CHECK(out.find("false negatives: 0\n") != std::string::npos);
     std::ifstream in(dir / "r.json");
     const json r = json::parse(in);
@@ -57,13 +40,13 @@ TEST_CASE("ccdlab ccd runs the shipped hard query files without a miss", "[cloth
     CHECK(r["results"].size() == n);
     CHECK(r["seconds"].size() == n);
     // The exact reference reproduces the expected column: zero misses and zero false positives.
-    REQUIRE(run_ccdlab(file + " --kind " + kind + " --exact -o " + (dir / "x.json"), dir, &out) == 0);
+    REQUIRE(run_ccd(file + " --kind " + kind + " --exact -o " + (dir / "x.json"), dir, &out) == 0);
     std::ifstream xin(dir / "x.json");
     const json x = json::parse(xin);
     CHECK(x["false_negatives"] == 0);
     CHECK(x["false_positives"] == 0);
     // The files are what --write-hard writes today.
-    REQUIRE(run_ccdlab("--write-hard --kind " + kind + " -o " + (dir / "h.csv"), dir) == 0);
+    REQUIRE(run_ccd("--write-hard --kind " + kind + " -o " + (dir / "h.csv"), dir) == 0);
     std::ifstream a(file), b(dir / "h.csv");
     CHECK(std::string(std::istreambuf_iterator<char>(a), {}) == std::string(std::istreambuf_iterator<char>(b), {}));
   }
@@ -75,12 +58,12 @@ TEST_CASE("ccdlab ccd rejects bad input with exit 2 and one line", "[cloth][cli]
   {
     std::ofstream(dir / "bad.csv") << "1,1,0,1,0,1,1\n1,1,0,1,x,1,1\n";
   }
-  CHECK(run_ccdlab((dir / "bad.csv") + " --kind vf -o " + (dir / "r.json"), dir, nullptr, &err) == 2);
+  CHECK(run_ccd((dir / "bad.csv") + " --kind vf -o " + (dir / "r.json"), dir, nullptr, &err) == 2);
   CHECK(err == "ccdlab ccd: " + (dir / "bad.csv") + ": line 2, column 5: not a decimal integer: 'x'\n");
   CHECK_FALSE(fs::exists(dir / "r.json"));
-  CHECK(run_ccdlab(data("hard_vf.csv") + " --kind xx", dir, nullptr, &err) == 2);
-  CHECK(run_ccdlab(data("hard_vf.csv"), dir, nullptr, &err) == 2);
-  CHECK(run_ccdlab(data("hard_vf.csv") + " --kind vf --separation -1", dir, nullptr, &err) == 2);
-  CHECK(run_ccdlab((dir / "missing.csv") + " --kind vf", dir, nullptr, &err) == 2);
-  CHECK(run_ccdlab(data("hard_vf.csv") + " --kind vf -o " + data("hard_vf.csv"), dir, nullptr, &err) == 2);
+  CHECK(run_ccd(data("hard_vf.csv") + " --kind xx", dir, nullptr, &err) == 2);
+  CHECK(run_ccd(data("hard_vf.csv"), dir, nullptr, &err) == 2);
+  CHECK(run_ccd(data("hard_vf.csv") + " --kind vf --separation -1", dir, nullptr, &err) == 2);
+  CHECK(run_ccd((dir / "missing.csv") + " --kind vf", dir, nullptr, &err) == 2);
+  CHECK(run_ccd(data("hard_vf.csv") + " --kind vf -o " + data("hard_vf.csv"), dir, nullptr, &err) == 2);
 }

@@ -1,37 +1,22 @@
 // `ccdlab cloth`: built-in scenes and scene files simulate and write their frames; bad
 // input exits 2 with one line and writes nothing.
+#include "cli_support.hpp"
+
 #include <catch2/catch.hpp>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+using ccdlab::test::Folder;
+
 namespace {
 
-struct Folder {
-  fs::path path;
-  Folder() {
-    std::string tmpl = (fs::temp_directory_path() / "ccdlab-cloth-test-XXXXXX").string();
-    path = ::mkdtemp(tmpl.data());
-  }
-  ~Folder() { fs::remove_all(path); }
-  std::string operator/(const std::string& name) const { return (path / name).string(); }
-};
-
 int run_cloth(const std::string& args, const Folder& dir, std::string* err = nullptr) {
-  const std::string e = dir / "stderr.txt";
-  const int rc = std::system((std::string(CCDLAB_BINARY) + " cloth " + args + " >/dev/null 2>" + e).c_str());
-  if (err) {
-    std::ifstream in(e);
-    err->assign(std::istreambuf_iterator<char>(in), {});
-  }
-  return WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+  return ccdlab::test::run_ccdlab("cloth " + args, dir, nullptr, err);
 }
 
 }  // namespace
