@@ -32,6 +32,7 @@ import tempfile
 import numpy as np
 
 import matplotlib
+from results_json import BadInput, read_results
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -40,20 +41,8 @@ from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
 
 
-class BadInput(Exception):
-    pass
-
-
 def load_results(path):
-    try:
-        with open(path) as f:
-            res = json.load(f)
-    except OSError as e:
-        raise BadInput(f"{path}: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise BadInput(f"{path}: not JSON ({e.msg} at line {e.lineno})")
-    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/2":
-        raise BadInput(f'{path}: format: must be "ccdlab-results/2"')
+    res = read_results(path)
     if not isinstance(res.get("records"), list):
         raise BadInput(f"{path}: records: must be an array")
     truth = res.get("truth")

@@ -22,6 +22,7 @@ import sys
 
 import matplotlib
 import numpy as np
+from results_json import by_method
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -51,15 +52,6 @@ def load(path):
     if not res.get("records"):
         fail(f"{path}: records: no records to plot")
     return res
-
-
-def by_method(records):
-    out = {}
-    for r in records:
-        out.setdefault(r["method"], []).append(r)
-    for rs in out.values():
-        rs.sort(key=lambda r: r["dt"])
-    return out
 
 
 def style(i):

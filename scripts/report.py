@@ -24,6 +24,7 @@ import os
 import sys
 
 import matplotlib
+from results_json import BadInput, by_method, read_results
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -35,20 +36,8 @@ STYLES = ["-", "--", ":", "-."]
 MARKERS = "osD^v<>pP*Xh"
 
 
-class BadInput(Exception):
-    pass
-
-
 def load(path):
-    try:
-        with open(path) as f:
-            res = json.load(f)
-    except OSError as e:
-        raise BadInput(f"{path}: {e.strerror}")
-    except json.JSONDecodeError as e:
-        raise BadInput(f"{path}: not JSON ({e.msg} at line {e.lineno})")
-    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/2":
-        raise BadInput(f"{path}: format: must be \"ccdlab-results/2\"")
+    res = read_results(path)
     records = res.get("records")
     if not isinstance(records, list) or not records:
         raise BadInput(f"{path}: records: must be a non-empty array")
@@ -75,15 +64,6 @@ def label_of(path, res, all_paths):
     base = os.path.basename(path)
     names = [os.path.basename(p) for p in all_paths]
     return f"{name} ({base})" if name and names.count(base) == 1 else path
-
-
-def by_method(records):
-    out = {}
-    for r in records:
-        out.setdefault(r["method"], []).append(r)
-    for rs in out.values():
-        rs.sort(key=lambda r: r["dt"])
-    return out
 
 
 def frontier(runs):

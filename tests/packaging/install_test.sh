@@ -22,3 +22,18 @@ cmake --build "$work/consumer" -j2 >/dev/null
 "$work/consumer/consumer"
 "$work/consumer/consumer_core"
 "$work/prefix/bin/ccdlab" --version
+# The installed scripts behind `ccdlab report` and `ccdlab animate` load (with their shared
+# reader): a missing results file is bad input (status 2), not an import failure.
+for command in report animate; do
+  status=0
+  if [ "$command" = report ]; then
+    "$work/prefix/bin/ccdlab" report "$work/none.json" -o "$work/report" 2>/dev/null || status=$?
+  else
+    "$work/prefix/bin/ccdlab" animate "$src/data/scenes/example.json" --results "$work/none.json" \
+      --method aabb/sap --dt 0.1 -o "$work/a.gif" 2>/dev/null || status=$?
+  fi
+  if [ "$status" -ne 2 ]; then
+    echo "install_test: the installed ccdlab $command exits $status on a missing results file, not 2" >&2
+    exit 1
+  fi
+done
