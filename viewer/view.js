@@ -365,7 +365,11 @@
       const on = state.pair && Number(tr.dataset.a) === state.pair[0] && Number(tr.dataset.b) === state.pair[1] &&
         Number(tr.dataset.index) === state.missedIndex;
       tr.classList.toggle('selected', !!on);
-      if (on && tr.scrollIntoView) tr.scrollIntoView({ block: 'nearest' });
+      if (on) {  // scroll the table only, not the page
+        const wrap = el('missed-wrap');
+        if (tr.offsetTop < wrap.scrollTop + 24 || tr.offsetTop > wrap.scrollTop + wrap.clientHeight - 24)
+          wrap.scrollTop = Math.max(0, tr.offsetTop - wrap.clientHeight / 2);
+      }
     }
   }
 
@@ -519,6 +523,44 @@
     };
   }
 
+  // Many spheres: one point per body, drawn as a shaded disc of the sphere's projected size
+  // (an impostor: one vertex per body instead of a mesh's hundred). Above this count, unless
+  // the fragment says spheres=mesh; spheres=points forces it.
+  const POINTS_ABOVE = 2000;
+  function usePoints(count) {
+    const f = readFragment().spheres;
+    return f === 'points' || (f !== 'mesh' && count > POINTS_ABOVE);
+  }
+
+  function spherePoints(radii) {
+    const geo = new THREE.BufferGeometry();
+    geo.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * radii.length), 3));
+    geo.setAttribute('radius', new THREE.BufferAttribute(new Float32Array(radii), 1));
+    const material = new THREE.ShaderMaterial({
+      uniforms: { scale: { value: 1 }, colour: { value: new THREE.Color(0x6d8fb3) } },
+      vertexShader: [
+        'attribute float radius;', 'uniform float scale;',
+        'void main() {',
+        '  vec4 mv = modelViewMatrix * vec4(position, 1.0);',
+        '  gl_Position = projectionMatrix * mv;',
+        '  gl_PointSize = max(2.0, 2.0 * radius * scale / max(-mv.z, 1e-6));',
+        '}'].join('\n'),
+      fragmentShader: [
+        'uniform vec3 colour;',
+        'void main() {',
+        '  vec2 q = 2.0 * gl_PointCoord - 1.0;',
+        '  float d = dot(q, q);',
+        '  if (d > 1.0) discard;',
+        '  vec3 n = vec3(q.x, -q.y, sqrt(1.0 - d));',
+        '  float light = 0.45 + 0.55 * max(0.0, dot(n, normalize(vec3(0.4, 0.6, 0.7))));',
+        '  gl_FragColor = vec4(colour * light + 0.08, 1.0);',
+        '}'].join('\n'),
+    });
+    const points = new THREE.Points(geo, material);
+    points.frustumCulled = false;
+    return points;
+  }
+
   function capsuleGeometry(halfLength, radius, segments) {
     // A capsule along x: a lathe of two quarter circles joined by a straight side.
     const pts = [];
@@ -549,7 +591,7 @@
   function makeBodies3D() {
     motion = new BodyMotion(data.bodies);
     const n = motion.count;
-    const segments = n > 2000 ? 10 : n > 200 ? 16 : 24;
+    const segments = n > 5000 ? 8 : n > 2000 ? 10 : n > 200 ? 16 : 24;
     const unitSphere = new THREE.SphereBufferGeometry(1, segments, Math.max(6, segments >> 1));
     const bodyMaterial = new THREE.MeshLambertMaterial({ color: 0x6d8fb3 });
     const shapes = data.shapes || [];
@@ -568,6 +610,11 @@
     }
     for (const g of groups) {
       if (!g.members.length) continue;
+      if (g === groups[0] && usePoints(g.members.length)) {
+        g.points = spherePoints(g.members.map((i) => motion.radius[i]));
+        scene3.add(g.points);
+        continue;
+      }
       g.mesh = new THREE.InstancedMesh(g.geometry, bodyMaterial, g.members.length);
       g.mesh.frustumCulled = false;
       scene3.add(g.mesh);
@@ -590,9 +637,19 @@
       scene3.add(m);
       return m;
     });
+    // The pair's paths over the current step, drawn over everything: a tunnelling body's
+    // path crosses the other body between two samples.
+    const PATH_POINTS = 64;
+    const pathGeo = new THREE.BufferGeometry();
+    pathGeo.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * 2 * 2 * PATH_POINTS), 3));
+    const pathLines = new THREE.LineSegments(pathGeo, new THREE.LineBasicMaterial({ color: 0x900000, depthTest: false }));
+    pathLines.renderOrder = 11;
+    pathLines.frustumCulled = false;
+    pathLines.visible = false;
+    scene3.add(pathLines);
     // Bounds: boxes, spheres and capsules (a cylinder and two spheres), translucent.
     const boundMaterial = new THREE.MeshBasicMaterial({ color: 0xe8a020, transparent: true, opacity: 0.25, depthWrite: false });
-    const pairBoundMaterial = new THREE.MeshBasicMaterial({ color: 0xd03030, transparent: true, opacity: 0.3, depthWrite: false });
+    const pairBoundMaterial = new THREE.MeshBasicMaterial({ color: 0xd03030, transparent: true, opacity: 0.3, depthWrite: false, depthTest: false });
     const boxGeo = new THREE.BoxBufferGeometry(1, 1, 1);
     const cylGeo = new THREE.CylinderBufferGeometry(1, 1, 1, 16, 1, true);
     const pools = {
@@ -634,6 +691,17 @@
     updateScene = function () {
       const t = state.t;
       for (const g of groups) {
+        if (g.points) {
+          const arr = g.points.geometry.attributes.position.array;
+          g.members.forEach((i, slot) => {
+            motion.position(i, t, pos);
+            arr[3 * slot] = pos.x; arr[3 * slot + 1] = pos.y; arr[3 * slot + 2] = pos.z;
+          });
+          g.points.geometry.attributes.position.needsUpdate = true;
+          g.points.material.uniforms.scale.value = renderer.getDrawingBufferSize(new THREE.Vector2()).y /
+            (2 * Math.tan(camera.fov * Math.PI / 360));
+          continue;
+        }
         if (!g.mesh) continue;
         g.members.forEach((i, slot) => {
           motion.position(i, t, pos);
@@ -666,6 +734,20 @@
           if (g.scaled) { ghosts[k].quaternion.set(0, 0, 0, 1); ghosts[k].scale.setScalar(motion.radius[i]); }
           else { motion.orientation(i, step.t0, ghosts[k].quaternion); ghosts[k].scale.setScalar(1); }
         }
+      }
+      pathLines.visible = !!(pair && step);
+      if (pathLines.visible) {
+        const arr = pathGeo.attributes.position.array;
+        let c = 0;
+        for (const i of pair) {
+          for (let j = 0; j < PATH_POINTS; ++j) {
+            for (const u of [j, j + 1]) {
+              motion.position(i, step.t0 + (step.t1 - step.t0) * u / PATH_POINTS, pos);
+              arr[c++] = pos.x; arr[c++] = pos.y; arr[c++] = pos.z;
+            }
+          }
+        }
+        pathGeo.attributes.position.needsUpdate = true;
       }
       for (const p of Object.values(pools)) p.begin();
       let pairText = '';
@@ -824,21 +906,24 @@
   function bench(frames) {
     const gl = renderer.getContext();
     const pixel = new Uint8Array(4);
-    const times = [];
+    const times = [], updates = [];
     for (let f = 0; f < frames; ++f) {
       const start = performance.now();
       state.t = data.horizon * (f + 0.5) / frames;
       updateScene();
+      const updated = performance.now();
       renderer.render(scene3, camera);
       gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
       times.push(performance.now() - start);
+      updates.push(updated - start);
     }
-    const sorted = times.slice().sort((x, y) => x - y);
+    const median = (xs) => xs.slice().sort((x, y) => x - y)[xs.length >> 1].toFixed(2);
     const out = el('bench');
     out.dataset.frames = String(frames);
-    out.dataset.meanMs = (times.reduce((x, y) => x + y, 0) / frames).toFixed(2);
-    out.dataset.medianMs = sorted[frames >> 1].toFixed(2);
-    out.textContent = 'frame time: median ' + out.dataset.medianMs + ' ms over ' + frames + ' frames';
+    out.dataset.medianMs = median(times);
+    out.dataset.updateMs = median(updates);
+    out.textContent = 'frame time: median ' + out.dataset.medianMs + ' ms over ' + frames + ' frames (of which ' +
+      out.dataset.updateMs + ' ms evaluating the motion)';
   }
 
   // ---------------------------------------------------------------- start
