@@ -22,8 +22,9 @@ cat >"$out/bullets-experiment.json" <<JSON
 JSON
 "$build/ccdlab" truth "$out/bullets.json" -o "$out/bullets-truth.json" --quiet
 "$build/ccdlab" run "$out/bullets-experiment.json" -o "$out/bullets-results.json" --truth "$out/bullets-truth.json" --quiet >/dev/null
-"$build/ccdlab" view "$out/bullets.json" --results "$out/bullets-results.json" --truth "$out/bullets-truth.json" \
-  -o "$out/bullets.html" >/dev/null
+# From the folder, so that the page names the files without a path.
+(cd "$out" && "$build/ccdlab" view bullets.json --results bullets-results.json --truth bullets-truth.json \
+  -o bullets.html >/dev/null)
 # The first missed contact after t = 0.4 (the one the tunnelling GIF shows is among them).
 pair=$(/usr/bin/python3 - "$out/bullets-results.json" <<'PY'
 import json, sys
