@@ -501,9 +501,11 @@
     this.matrices = [];
     this.ensure = function (n) {
       if (n <= this.capacity) return;
-      if (this.mesh) { scene3.remove(this.mesh); this.mesh.dispose && this.mesh.dispose(); }
+      const old = this.mesh;
+      if (old) scene3.remove(old);
       this.capacity = Math.max(n, capacity, this.capacity * 2);
       this.mesh = new THREE.InstancedMesh(this.geometry, this.material, this.capacity);
+      if (old) this.mesh.instanceMatrix.array.set(old.instanceMatrix.array);  // the instances pushed so far
       this.mesh.frustumCulled = false;
       this.mesh.renderOrder = material.transparent ? 2 : 0;
       scene3.add(this.mesh);
@@ -621,8 +623,9 @@
     }
     // The highlighted pair: drawn in red over everything else.
     // Two shades of red, so that two overlapping bodies stay apart.
-    const hiMaterials = [new THREE.MeshBasicMaterial({ color: HIGHLIGHT, depthTest: false }),
-      new THREE.MeshBasicMaterial({ color: HIGHLIGHT_SECOND, depthTest: false })];
+    // Marked transparent (fully opaque) so that they are drawn after the translucent bounds.
+    const hiMaterials = [HIGHLIGHT, HIGHLIGHT_SECOND].map((c) =>
+      new THREE.MeshBasicMaterial({ color: c, depthTest: false, transparent: true, opacity: 1 }));
     const hiGhost = new THREE.MeshBasicMaterial({ color: HIGHLIGHT, wireframe: true, transparent: true, opacity: 0.5 });
     const highlight = [0, 1].map((k) => {
       const m = new THREE.Mesh(unitSphere, hiMaterials[k]);
@@ -956,6 +959,10 @@
     for (const id of ['show-bounds', 'show-all-bounds', 'show-samples', 'show-truth', 'show-box'])
       el(id).addEventListener('change', () => { state.dirty = true; });
     if (data.kind === 'bodies' && data.bodies.count > 2000) el('show-all-bounds').checked = false;
+    if (f.bounds === 'all' || f.bounds === 'pair' || f.bounds === 'none') {
+      el('show-bounds').checked = f.bounds !== 'none';
+      el('show-all-bounds').checked = f.bounds === 'all';
+    }
     try {
       make3D();
     } catch (e) {

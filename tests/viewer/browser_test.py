@@ -2,10 +2,11 @@
 `ccdlab view` from disk (file://, no server, no network) and this test reads what it
 rendered.
 
-- The example experiment (data/experiments/example.json, --list-missed): for every method
-  with missed contacts, the page's table (elements with data-missed) equals the results
-  file's missed_events at the dt the URL fragment selects; a screenshot at one missed
-  contact is not blank and shows the highlighted pair in red.
+- The example experiment (data/experiments/example.json, which lists missed contacts): the
+  page's table (elements with data-missed) equals the results file's missed_events for the
+  method and dt the URL fragment selects (aabb/sap, which misses; capsule/sap and
+  horn:4/grid, which miss nothing, with every body's bounds drawn); a screenshot at a
+  missed contact is not blank and shows the highlighted pair in red.
 - The rigid example scene and the frames of a small cloth run load without error.
 
 Usage: browser_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when no chromium
@@ -48,14 +49,12 @@ def run(cmd, timeout=120):
     return p.stdout
 
 
-def dump_dom(browser, profile, url):
-    return run(browser_args(browser, profile) + ["--dump-dom", url])
-
-
-def screenshot(browser, profile, url, png):
-    run(browser_args(browser, profile) + ["--screenshot=" + png, url])
+def load(browser, profile, url, png):
+    """The page's DOM after loading `url`, and its screenshot written to `png` (one launch)."""
+    dom = run(browser_args(browser, profile) + ["--screenshot=" + png, "--dump-dom", url])
     if not os.path.exists(png):
         sys.exit(f"FAIL: chromium wrote no screenshot for {url}")
+    return parse(dom)
 
 
 class Dom(html.parser.HTMLParser):
@@ -160,36 +159,40 @@ def main():
         with open(results) as f:
             records = json.load(f)["records"]
         with_misses = [r for r in records if r.get("missed_events")]
-        if not with_misses:
-            sys.exit("FAIL: the example experiment should have missed contacts to show")
-        # The table for each method's run with misses (the largest dt of each method).
-        chosen = {}
-        for r in with_misses:
-            if r["method"] not in chosen or r["dt"] > chosen[r["method"]]["dt"]:
-                chosen[r["method"]] = r
-        for method, r in chosen.items():
-            url = f"file://{page}#method={method}&dt={r['dt']!r}&t=0"
-            dom = parse(dump_dom(browser, profile, url))
+        if not any(r["method"] == "aabb/sap" for r in with_misses):
+            sys.exit("FAIL: aabb/sap should miss contacts in the example experiment")
+        # The table for the method and dt the fragment chooses: aabb/sap at its smallest dt
+        # with a miss (not the page's default, its largest), and two conservative methods
+        # (no misses) with every body's bounds drawn (capsules, horn boxes); each at the
+        # first missed contact of aabb/sap, with its pair highlighted.
+        first = min((r for r in with_misses if r["method"] == "aabb/sap"), key=lambda r: r["dt"])
+        m0 = first["missed_events"][0]
+        t_missed = 0.5 * (m0["enter"] + m0["exit"])
+        pair = f"&pair={m0['a']}-{m0['b']}"
+        checks = [(first, pair)]
+        for method in ("capsule/sap", "horn:4/grid"):
+            r = max((r for r in records if r["method"] == method), key=lambda r: r["dt"])
+            checks.append((r, pair + "&bounds=all"))
+        for k, (r, extra) in enumerate(checks):
+            method = r["method"]
+            url = f"file://{page}#method={method}&dt={r['dt']!r}&t={t_missed!r}{extra}"
+            png = os.path.join(work, f"missed-{k}.png")
+            dom = load(browser, profile, url, png)
             if dom.body.get("data-status") != "ready":
                 sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
             if dom.body.get("data-method") != method or float(dom.body.get("data-dt", "nan")) != r["dt"]:
                 sys.exit(f"FAIL: {url}: the page chose {dom.body.get('data-method')} at {dom.body.get('data-dt')}")
             shown = [(int(m["data-a"]), int(m["data-b"]), float(m["data-enter"]), float(m["data-exit"]))
                      for m in dom.missed]
-            expected = [(m["a"], m["b"], m["enter"], m["exit"]) for m in r["missed_events"]]
+            expected = [(m["a"], m["b"], m["enter"], m["exit"]) for m in r.get("missed_events", [])]
             if shown != expected:
                 sys.exit(f"FAIL: {url}: the table lists {shown}, the results file {expected}")
-            print(f"{method} at dt = {r['dt']}: {len(shown)} missed contacts in the table, as in the results")
-        # A screenshot at the first missed contact of one run: the pair drawn in red.
-        method, r = next(iter(chosen.items()))
-        m = r["missed_events"][0]
-        t = 0.5 * (m["enter"] + m["exit"])
-        png = os.path.join(work, "missed.png")
-        screenshot(browser, profile, f"file://{page}#method={method}&dt={r['dt']!r}&t={t!r}&pair={m['a']}-{m['b']}", png)
-        other, red = pixel_counts(png, 0.6)
-        print(f"screenshot at the missed contact {m['a']}-{m['b']}, t = {t}: {other} drawn pixels, {red} of the pair")
-        if other < 5000 or red < 200:
-            sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
+            # The screenshot at the missed contact: the scene drawn, the pair in red.
+            other, red = pixel_counts(png, 0.6)
+            print(f"{method} at dt = {r['dt']}: {len(shown)} missed contacts in the table, as in the results; "
+                  f"screenshot at pair {m0['a']}-{m0['b']}, t = {t_missed}: {other} drawn pixels, {red} of the pair")
+            if other < 5000 or red < 200:
+                sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
         # The rigid example and a cloth run's frames load and draw.
         rigid = os.path.join(work, "rigid.html")
         run([ccdlab, "view", os.path.join(source, "data", "scenes", "rigid-example.json"), "-o", rigid])
@@ -198,11 +201,10 @@ def main():
         cloth = os.path.join(work, "cloth.html")
         run([ccdlab, "view", frames, "-o", cloth])
         for name, url in (("rigid", f"file://{rigid}#t=0.5"), ("cloth", f"file://{cloth}#t=0.05")):
-            dom = parse(dump_dom(browser, profile, url))
+            png = os.path.join(work, name + ".png")
+            dom = load(browser, profile, url, png)
             if dom.body.get("data-status") != "ready":
                 sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
-            png = os.path.join(work, name + ".png")
-            screenshot(browser, profile, url, png)
             other, _ = pixel_counts(png, 0.6)
             print(f"{name}: ready, {other} drawn pixels")
             if other < 2000:
