@@ -772,6 +772,7 @@
       if (pair) {
         const a = motion.position(pair[0], t, new THREE.Vector3()), b = motion.position(pair[1], t, new THREE.Vector3());
         const gap = a.distanceTo(b) - motion.radius[pair[0]] - motion.radius[pair[1]];
+        body.dataset.pairGap = String(gap);
         el('pair-info').textContent = 'pair ' + pair[0] + '-' + pair[1] + ': centre distance - radii = ' +
           gap.toPrecision(4) + (motion.shape[pair[0]] >= 0 || motion.shape[pair[1]] >= 0 ? ' (enclosing balls)' : '') +
           (pairText ? '; ' + pairText : '');
@@ -790,6 +791,7 @@
           frameView(min, max);
         }
       } else {
+        delete body.dataset.pairGap;
         el('pair-info').textContent = '';
       }
       // Truth's contacts in progress at t.

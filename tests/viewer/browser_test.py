@@ -187,10 +187,16 @@ def main():
             expected = [(m["a"], m["b"], m["enter"], m["exit"]) for m in r.get("missed_events", [])]
             if shown != expected:
                 sys.exit(f"FAIL: {url}: the table lists {shown}, the results file {expected}")
+            # The page's own motion (the exported pieces, evaluated in the browser) puts the
+            # pair in contact in the middle of the truth's contact interval: distance of the
+            # centres minus the radii <= 0 (the example's pair overlaps by 0.2 m there).
+            gap = float(dom.body.get("data-pair-gap", "nan"))
+            if not gap <= 1e-6:
+                sys.exit(f"FAIL: {url}: the pair is {gap} m apart in the page, in contact in the truth")
             # The screenshot at the missed contact: the scene drawn, the pair in red.
             other, red = pixel_counts(png, 0.6)
             print(f"{method} at dt = {r['dt']}: {len(shown)} missed contacts in the table, as in the results; "
-                  f"screenshot at pair {m0['a']}-{m0['b']}, t = {t_missed}: {other} drawn pixels, {red} of the pair")
+                  f"pair {m0['a']}-{m0['b']} at t = {t_missed}: gap {gap:.4g} m, {other} drawn pixels, {red} of the pair")
             if other < 5000 or red < 200:
                 sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
         # The rigid example and a cloth run's frames load and draw.
