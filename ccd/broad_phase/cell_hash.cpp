@@ -75,6 +75,7 @@ void CellHash::build(std::span<const Aabb> boxes, double cell) {
     for (int k = 0; k < 3; ++k) origin_[k] = std::min(origin_[k], b.lo[k]);
   if (boxes.empty()) origin_[0] = origin_[1] = origin_[2] = 0.0;
   cells_.clear();
+  cells_.reserve(2 * boxes.size());
   big_.clear();
   ranges_.resize(boxes.size());
   for (std::uint32_t i = 0; i < boxes.size(); ++i) {

@@ -8,10 +8,14 @@
 namespace ccd {
 
 void UniformGrid::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
+  hash_current_ = false;  // the boxes may all have changed
+  find_all(boxes, out);
+}
+
+void UniformGrid::find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
   out.clear();
   stats_ = {};
   stats_.rebuilt = true;
-  hash_current_ = false;
   if (boxes.size() < 2) return;
   constexpr double inf = std::numeric_limits<double>::infinity();
   struct Bounds {
@@ -58,23 +62,30 @@ void UniformGrid::update(std::span<const Aabb> boxes, std::span<const std::uint3
   out.clear();
   const std::size_t n = boxes.size();
   if (moved.empty()) return;
-  if (moved.size() * 4 >= n) {  // a large batch: one sorted pass (find_pairs, filtered)
-    BroadPhase::update(boxes, moved, out);
+  if (hash_current_ && hash_.size() == n)  // keep the hashed grid current: O(moved)
+    for (const std::uint32_t m : moved) hash_.move(m, boxes[m]);
+  else
+    hash_current_ = false;
+  if (moved.size() * 4 >= n) {  // a large batch: one sorted pass, filtered
+    find_all(boxes, all_);
+    order_.assign(n, 0);
+    for (const std::uint32_t m : moved) order_[m] = 1;
+    for (const BodyPair& p : all_)
+      if (order_[p.a] || order_[p.b]) out.push_back(p);
+    for (const std::uint32_t m : moved) order_[m] = 0;
     return;
   }
   stats_ = {};
-  if (!hash_current_ || hash_.size() != n) {
+  if (!hash_current_) {
     double extent = 0.0;
     for (const Aabb& b : boxes) extent += (b.hi - b.lo).maxCoeff();
-    extent /= static_cast<double>(n);
+    extent = 2.0 * extent / static_cast<double>(n);  // most boxes then cover 1 to 8 cells
     hash_.build(boxes, std::isfinite(extent) && extent > 0.0 ? extent : 1.0);
     hash_current_ = true;
     stats_.rebuilt = true;
     seen_.assign(n, 0);
     order_.assign(n, 0);
     query_ = 0;
-  } else {
-    for (const std::uint32_t m : moved) hash_.move(m, boxes[m]);
   }
   for (std::size_t k = 0; k < moved.size(); ++k) order_[moved[k]] = static_cast<std::uint32_t>(k + 1);
   for (std::size_t k = 0; k < moved.size(); ++k) {

@@ -16,10 +16,11 @@
 //
 // Incremental update (update(), for the earliest scheduler): a batch of fewer than a
 // quarter of the bodies moves only those bodies in a hashed grid kept between calls
-// (ccd/broad_phase/cell_hash.hpp; cell size the mean largest box extent, chosen when it is
-// built) and tests each moved box against the bodies listed in its cells: O(moved x cell
-// occupancy), independent of N. A larger batch, or a find_pairs call in between, goes
-// through find_pairs (the hashed grid is then rebuilt at the next small batch).
+// (ccd/broad_phase/cell_hash.hpp; cell size twice the mean largest box extent, chosen when
+// it is built) and tests each moved box against the bodies listed in its cells: O(moved x cell
+// occupancy), independent of N. A larger batch goes
+// through the sorted grid, filtered (the hashed grid, once built, is kept current by every
+// update; a find_pairs call in between makes it rebuild at the next small batch).
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/cell_grid.hpp>
 #include <ccd/broad_phase/cell_hash.hpp>
@@ -49,6 +50,8 @@ class UniformGrid final : public BroadPhase {
   double cell_size() const { return cell_; }
 
  private:
+  void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // find_pairs' pass
+
   GridOptions options_;
   double cell_ = 0.0;
   detail::CellGrid cells_;
@@ -58,6 +61,7 @@ class UniformGrid final : public BroadPhase {
   std::vector<std::uint32_t> seen_;   // per body: the last query that visited it
   std::vector<std::uint32_t> order_;  // per body: 1 + its place in `moved`, 0 if not moved
   std::uint32_t query_ = 0;
+  std::vector<BodyPair> all_;  // a large batch's pairs before filtering
 };
 
 }  // namespace ccd
