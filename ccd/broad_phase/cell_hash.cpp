@@ -60,9 +60,7 @@ void CellHash::remove(std::uint32_t i, const Range& r) {
     for (std::int32_t y = r.lo[1]; y <= r.hi[1]; ++y)
       for (std::int32_t x = r.lo[0]; x <= r.hi[0]; ++x) {
         const auto it = cells_.find(key(x, y, z));
-        if (it == cells_.end()) continue;
-        drop(it->second);
-        if (it->second.empty()) cells_.erase(it);
+        if (it != cells_.end()) drop(it->second);  // an emptied cell keeps its list (no allocation churn)
       }
 }
 
