@@ -13,8 +13,8 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Speed-adapted windows are at least dt / 2^16 long.
-constexpr int kMaxWindowHalvings = 16;
+// Speed-adapted windows are at least dt / 2^10 long.
+constexpr int kMaxWindowHalvings = 10;
 
 enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
 

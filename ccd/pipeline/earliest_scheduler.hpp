@@ -53,7 +53,7 @@ struct ScheduleOptions {
   /// refined at different times still expire together and the broad phase updates them
   /// in one batch); false: at t + dt (every body on its own clock).
   bool align = true;
-  /// > 0: speed-adapted windows. A body's window is the longest dt / 2^k (k <= 16) over
+  /// > 0: speed-adapted windows. A body's window is the longest dt / 2^k (k <= 10) over
   /// which it moves at most `reach` x the bodies' mean radius, judged from its state at the
   /// window start (|v| w + A w^2 / 2); with `align` it ends on a multiple of its own length,
   /// so bodies of one length still expire together. Slow bodies keep long windows (few
