@@ -16,10 +16,12 @@ extern const Command kReportCommand;
 extern const Command kAnimateCommand;
 extern const Command kCcdCommand;
 extern const Command kClothCommand;
+extern const Command kViewCommand;
 
 std::span<const Command> commands() {
   static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
-                                  kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand};
+                                  kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand,
+                                  kViewCommand};
   return table;
 }
 

@@ -22,6 +22,13 @@ cmake --build "$work/consumer" -j2 >/dev/null
 "$work/consumer/consumer"
 "$work/consumer/consumer_core"
 "$work/prefix/bin/ccdlab" --version
+# The installed `ccdlab view` carries its page (embedded at build time): the whole page,
+# three.js included, from the installed program alone.
+"$work/prefix/bin/ccdlab" view "$src/data/scenes/example.json" -o "$work/view.html" >/dev/null
+grep -q 'data-missed' "$work/view.html" && grep -q 'REVISION' "$work/view.html" || {
+  echo "install_test: the installed ccdlab view wrote an incomplete page" >&2
+  exit 1
+}
 # The installed scripts behind `ccdlab report` and `ccdlab animate` load (with their shared
 # reader): a missing results file is bad input (status 2), not an import failure.
 for command in report animate; do

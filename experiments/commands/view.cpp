@@ -1,0 +1,124 @@
+// `ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o view.html`: one
+// self-contained HTML page that plays the scene in a browser, with the bounds, the truth's
+// contacts and every contact a method missed (docs/viewer.md).
+#include "command.hpp"
+
+#include "../view_data.hpp"
+#include "../view_page.hpp"
+
+#include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_io.hpp>
+#include <ccd/truth/truth_io.hpp>
+
+#include <exception>
+#include <iostream>
+#include <new>
+#include <optional>
+#include <vector>
+
+namespace ccdlab {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o VIEW.html\n"
+    "\n"
+    "Writes one self-contained HTML page (three.js inlined; open it from disk, no server and no\n"
+    "network needed) that plays the scene: play, pause, scrub time; spheres and rigid shapes;\n"
+    "for a method and dt of the results, its sample instants, its bounds, the truth's contacts\n"
+    "and a table of every contact it missed (click a row to jump there). The URL fragment\n"
+    "selects the view: VIEW.html#method=aabb/sap&dt=0.05&t=0.5 (docs/viewer.md).\n"
+    "\n"
+    "  SCENE.json            a ccdlab-scene/1 or /2 file, or the frames of a cloth run\n"
+    "                        (ccdlab-cloth-frames/1, from ccdlab cloth ... -o FRAMES.json)\n"
+    "  --results RESULTS.json  a results file of this scene (ccdlab run --list-missed lists the\n"
+    "                        missed contacts the page shows)\n"
+    "  --truth TRUTH.json    the scene's ground truth (ccdlab truth -o): its contacts are drawn\n"
+    "  -o VIEW.html          the page (written atomically; checked before the work)\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
+
+int usage_error(const std::string& what) {
+  std::cerr << "ccdlab view: " << what << " (see ccdlab view --help)\n";
+  return kExitBadInput;
+}
+
+int run_view(std::span<const std::string> args) {
+  std::string scene_path, results_path, truth_path, out_path;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "-o" || a == "--output" || a == "--results" || a == "--truth") {
+      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
+      std::string& slot = a == "--results" ? results_path : a == "--truth" ? truth_path : out_path;
+      if (!slot.empty()) return usage_error(a + " given twice");
+      slot = args[++i];
+      if (slot.empty()) return usage_error(a + " needs a file name");
+    } else if (!a.empty() && a[0] == '-') {
+      return usage_error("unknown option '" + a + "'");
+    } else if (scene_path.empty()) {
+      scene_path = a;
+    } else {
+      return usage_error("unexpected argument '" + a + "'");
+    }
+  }
+  if (scene_path.empty()) return usage_error("missing SCENE.json");
+  if (out_path.empty()) return usage_error("missing -o VIEW.html");
+  try {
+    std::vector<std::string> inputs{scene_path};
+    if (!results_path.empty()) inputs.push_back(results_path);
+    if (!truth_path.empty()) inputs.push_back(truth_path);
+    ccd::OutputFile output(out_path, inputs);
+    const nlohmann::json scene_json = ccd::read_json_file(scene_path);
+    const nlohmann::json* format = scene_json.is_object() && scene_json.contains("format") ? &scene_json["format"] : nullptr;
+    nlohmann::json data;
+    if (format && *format == "ccdlab-cloth-frames/1") {
+      if (!results_path.empty() || !truth_path.empty())
+        return usage_error("--results and --truth are for body scenes, not for cloth frames");
+      data = cloth_view_data(scene_json, scene_path);
+    } else if (format && *format == "ccdlab-cloth/1") {
+      throw ccd::InputError(scene_path, "format",
+                            "a cloth scene is shown from its frames: run `ccdlab cloth " + scene_path +
+                                " -o FRAMES.json` and view FRAMES.json");
+    } else {
+      const ccd::Scene scene = ccd::scene_from_json(scene_json, scene_path);
+      ViewInputs in;
+      in.scene_file = scene_path;
+      if (!results_path.empty()) {
+        in.results_file = results_path;
+        in.results = ccd::read_json_file(results_path);
+      }
+      if (!truth_path.empty()) {
+        in.truth_file = truth_path;
+        in.truth = ccd::load_truth(truth_path);
+      }
+      try {
+        data = body_view_data(scene, in);
+      } catch (const ccd::TooManyPieces& e) {
+        throw ccd::InputError(scene_path, "bodies[" + std::to_string(e.body()) + "]",
+                              "needs more than " + std::to_string(e.limit()) + " trajectory pieces over the horizon");
+      }
+    }
+    output.commit(view_page(data));
+    if (!output.is_stdout()) std::cout << "written      " << out_path << "\n";
+  } catch (const ccd::InputError& e) {
+    std::cerr << "ccdlab view: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab view: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ccdlab view: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+extern const Command kViewCommand = {
+    "view", "an interactive HTML page of a scene: its motion, a method's bounds and every contact it missed", kUsage,
+    run_view};
+
+}  // namespace ccdlab

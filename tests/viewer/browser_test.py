@@ -1,0 +1,228 @@
+"""The viewer page in a real browser: Debian's chromium, headless, loads pages written by
+`ccdlab view` from disk (file://, no server, no network) and this test reads what it
+rendered.
+
+- The example experiment (data/experiments/example.json, which lists missed contacts): the
+  page's table (elements with data-missed) equals the results file's missed_events for the
+  method and dt the URL fragment selects (aabb/sap, which misses; capsule/sap and
+  horn:4/grid, which miss nothing, with every body's bounds drawn); a screenshot at a
+  missed contact is not blank and shows the highlighted pair in red.
+- The rigid example scene and the frames of a small cloth run load without error.
+
+Usage: browser_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when no chromium
+is installed (scripts/install-deps.sh installs it).
+"""
+import html.parser
+import json
+import os
+import shutil
+import struct
+import subprocess
+import sys
+import tempfile
+import zlib
+
+SKIP = 77
+
+
+def chromium():
+    for name in (os.environ.get("CCDLAB_CHROMIUM"), "chromium", "chromium-browser", "google-chrome"):
+        if name and shutil.which(name):
+            return shutil.which(name)
+    return None
+
+
+def browser_args(browser, profile):
+    args = [browser, "--headless", "--disable-gpu-sandbox", "--use-gl=angle", "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader", "--no-first-run", "--no-default-browser-check",
+            "--disable-extensions", "--disable-background-networking", "--mute-audio",
+            "--user-data-dir=" + profile, "--window-size=1100,700", "--hide-scrollbars"]
+    if os.geteuid() == 0:
+        args.append("--no-sandbox")  # chromium refuses to run as root with its sandbox
+    return args
+
+
+def run(cmd, timeout=120):
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    if p.returncode != 0:
+        sys.exit(f"FAIL: {' '.join(cmd)} exited {p.returncode}\n{p.stdout}\n{p.stderr}")
+    return p.stdout
+
+
+def load(browser, profile, url, png):
+    """The page's DOM after loading `url`, and its screenshot written to `png` (one launch)."""
+    dom = run(browser_args(browser, profile) + ["--screenshot=" + png, "--dump-dom", url])
+    if not os.path.exists(png):
+        sys.exit(f"FAIL: chromium wrote no screenshot for {url}")
+    return parse(dom)
+
+
+class Dom(html.parser.HTMLParser):
+    """The body's data attributes and the rows of the missed-contact table."""
+
+    def __init__(self):
+        super().__init__()
+        self.body = {}
+        self.missed = []
+
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "body":
+            self.body = a
+        if "data-missed" in a:
+            self.missed.append(a)
+
+
+def parse(text):
+    d = Dom()
+    d.feed(text)
+    return d
+
+
+def png_pixels(path):
+    """(width, height, rows of RGBA or RGB bytes) of an 8-bit non-interlaced PNG."""
+    with open(path, "rb") as f:
+        raw = f.read()
+    if raw[:8] != b"\x89PNG\r\n\x1a\n":
+        sys.exit(f"FAIL: {path} is not a PNG")
+    pos, idat, w = 8, b"", None
+    while pos < len(raw):
+        n, kind = struct.unpack(">I4s", raw[pos:pos + 8])
+        chunk = raw[pos + 8:pos + 8 + n]
+        if kind == b"IHDR":
+            w, h, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", chunk)
+            if depth != 8 or colour not in (2, 6) or interlace:
+                sys.exit(f"FAIL: {path}: unexpected PNG layout (depth {depth}, colour {colour})")
+            bpp = 4 if colour == 6 else 3
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + n
+    data = zlib.decompress(idat)
+    stride = w * bpp
+    rows, prev = [], bytearray(stride)
+    for y in range(h):
+        ftype = data[y * (stride + 1)]
+        line = bytearray(data[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            left = line[i - bpp] if i >= bpp else 0
+            up = prev[i]
+            ul = prev[i - bpp] if i >= bpp else 0
+            if ftype == 1:
+                line[i] = (line[i] + left) & 255
+            elif ftype == 2:
+                line[i] = (line[i] + up) & 255
+            elif ftype == 3:
+                line[i] = (line[i] + (left + up) // 2) & 255
+            elif ftype == 4:
+                p = left + up - ul
+                pa, pb, pc = abs(p - left), abs(p - up), abs(p - ul)
+                pred = left if pa <= pb and pa <= pc else up if pb <= pc else ul
+                line[i] = (line[i] + pred) & 255
+        rows.append(bytes(line))
+        prev = line
+    return w, h, bpp, rows
+
+
+def pixel_counts(path, width_fraction):
+    """Pixels of the 3D view (the left `width_fraction` of the page) that differ from its
+    background, and of those the pure highlight red."""
+    w, h, bpp, rows = png_pixels(path)
+    background = (0xF4, 0xF4, 0xF1)
+    other = red = 0
+    for row in rows[: int(h * 0.9)]:
+        for x in range(0, int(w * width_fraction) * bpp, bpp):
+            r, g, b = row[x], row[x + 1], row[x + 2]
+            if abs(r - background[0]) + abs(g - background[1]) + abs(b - background[2]) > 24:
+                other += 1
+                if r > 200 and g < 60 and b < 60:
+                    red += 1
+    return other, red
+
+
+def main():
+    ccdlab, source = sys.argv[1], sys.argv[2]
+    browser = chromium()
+    if not browser:
+        print("SKIPPED: no chromium found (Debian's chromium: scripts/install-deps.sh)")
+        return SKIP
+    work = tempfile.mkdtemp(prefix="ccdlab-view-test.")
+    try:
+        profile = os.path.join(work, "profile")
+        results = os.path.join(work, "results.json")
+        truth = os.path.join(work, "truth.json")
+        page = os.path.join(work, "view.html")
+        scene = os.path.join(source, "data", "scenes", "example.json")
+        run([ccdlab, "truth", scene, "-o", truth, "--quiet"])
+        run([ccdlab, "run", os.path.join(source, "data", "experiments", "example.json"), "-o", results,
+             "--truth", truth, "--quiet"])
+        run([ccdlab, "view", scene, "--results", results, "--truth", truth, "-o", page])
+        with open(results) as f:
+            records = json.load(f)["records"]
+        with_misses = [r for r in records if r.get("missed_events")]
+        if not any(r["method"] == "aabb/sap" for r in with_misses):
+            sys.exit("FAIL: aabb/sap should miss contacts in the example experiment")
+        # The table for the method and dt the fragment chooses: aabb/sap at its smallest dt
+        # with a miss (not the page's default, its largest), and two conservative methods
+        # (no misses) with every body's bounds drawn (capsules, horn boxes); each at the
+        # first missed contact of aabb/sap, with its pair highlighted.
+        first = min((r for r in with_misses if r["method"] == "aabb/sap"), key=lambda r: r["dt"])
+        m0 = first["missed_events"][0]
+        t_missed = 0.5 * (m0["enter"] + m0["exit"])
+        pair = f"&pair={m0['a']}-{m0['b']}"
+        checks = [(first, pair)]
+        for method in ("capsule/sap", "horn:4/grid"):
+            r = max((r for r in records if r["method"] == method), key=lambda r: r["dt"])
+            checks.append((r, pair + "&bounds=all"))
+        for k, (r, extra) in enumerate(checks):
+            method = r["method"]
+            url = f"file://{page}#method={method}&dt={r['dt']!r}&t={t_missed!r}{extra}"
+            png = os.path.join(work, f"missed-{k}.png")
+            dom = load(browser, profile, url, png)
+            if dom.body.get("data-status") != "ready":
+                sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
+            if dom.body.get("data-method") != method or float(dom.body.get("data-dt", "nan")) != r["dt"]:
+                sys.exit(f"FAIL: {url}: the page chose {dom.body.get('data-method')} at {dom.body.get('data-dt')}")
+            shown = [(int(m["data-a"]), int(m["data-b"]), float(m["data-enter"]), float(m["data-exit"]))
+                     for m in dom.missed]
+            expected = [(m["a"], m["b"], m["enter"], m["exit"]) for m in r.get("missed_events", [])]
+            if shown != expected:
+                sys.exit(f"FAIL: {url}: the table lists {shown}, the results file {expected}")
+            # The page's own motion (the exported pieces, evaluated in the browser) puts the
+            # pair in contact in the middle of the truth's contact interval: distance of the
+            # centres minus the radii <= 0 (the example's pair overlaps by 0.2 m there).
+            gap = float(dom.body.get("data-pair-gap", "nan"))
+            if not gap <= 1e-6:
+                sys.exit(f"FAIL: {url}: the pair is {gap} m apart in the page, in contact in the truth")
+            # The screenshot at the missed contact: the scene drawn, the pair in red.
+            other, red = pixel_counts(png, 0.6)
+            print(f"{method} at dt = {r['dt']}: {len(shown)} missed contacts in the table, as in the results; "
+                  f"pair {m0['a']}-{m0['b']} at t = {t_missed}: gap {gap:.4g} m, {other} drawn pixels, {red} of the pair")
+            if other < 5000 or red < 200:
+                sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
+        # The rigid example and a cloth run's frames load and draw.
+        rigid = os.path.join(work, "rigid.html")
+        run([ccdlab, "view", os.path.join(source, "data", "scenes", "rigid-example.json"), "-o", rigid])
+        frames = os.path.join(work, "frames.json")
+        run([ccdlab, "cloth", "drape", "--n", "8", "--steps", "20", "--every", "5", "-o", frames])
+        cloth = os.path.join(work, "cloth.html")
+        run([ccdlab, "view", frames, "-o", cloth])
+        for name, url in (("rigid", f"file://{rigid}#t=0.5"), ("cloth", f"file://{cloth}#t=0.05")):
+            png = os.path.join(work, name + ".png")
+            dom = load(browser, profile, url, png)
+            if dom.body.get("data-status") != "ready":
+                sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
+            other, _ = pixel_counts(png, 0.6)
+            print(f"{name}: ready, {other} drawn pixels")
+            if other < 2000:
+                sys.exit(f"FAIL: the {name} screenshot {png} is blank ({other} drawn pixels)")
+        print("ok")
+        return 0
+    finally:
+        if os.environ.get("CCDLAB_KEEP_VIEW_TEST"):
+            print("kept", work)
+        else:
+            shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
