@@ -45,7 +45,10 @@ struct BodyStep {
   bool turning = false;                      ///< some spin over the step
   Mat3 still{Mat3::Identity()};              ///< the rotation when not turning
   double omega = 0.0;                        ///< |omega| of `spin`
-  double rho = 0.0;                          ///< max |core point|
+  Vec3 axis{Vec3::Zero()};                   ///< omega / |omega| of `spin`
+  /// max distance of a core point from the spin axis through the centre (rounded up);
+  /// max |core point| when the spin changes in the step
+  double rho = 0.0;
   double radius = 0.0;                       ///< enclosing radius
 
   BodyStep(const RigidMotion& motion, std::uint32_t b, double t0, double t1) : m(&motion), body(b), proxy(motion.proxy(b)) {
@@ -61,19 +64,37 @@ struct BodyStep {
         spin = &p;
       }
       if (covering != 1) spin = nullptr;
-      if (spin) omega = spin->omega.norm();
     }
     if (!turning) still = motion.pose(b, t0).rotation;
     double rho2 = 0.0;
     for (const Vec3& q : proxy.points) rho2 = std::max(rho2, q.squaredNorm());
     rho = std::sqrt(rho2);
+    if (spin && turning) {
+      omega = spin->omega.norm();
+      axis = spin->omega / omega;
+      // The spin axis in the body frame is fixed while the body turns about it: q0^-1 axis.
+      // |q x axis| has no cancellation; the axis itself is within a few ulps.
+      const Vec3 body_axis = spin->q0.conjugate() * axis;
+      double perp = 0.0;
+      for (const Vec3& q : proxy.points) perp = std::max(perp, q.cross(body_axis).norm());
+      const double eps = std::numeric_limits<double>::epsilon();
+      rho = std::min(rho, perp * (1.0 + 16.0 * eps) + 16.0 * eps * rho);
+    }
   }
 
   Pose pose(double t) const {
     Pose p;
     p.centre = piece ? piece->position(t) : m->centres().position(body, t);
-    p.rotation = !turning ? still : spin ? spin->orientation(t).toRotationMatrix()
-                                         : m->rotations().orientation(body, t).toRotationMatrix();
+    if (!turning) {
+      p.rotation = still;
+    } else if (spin) {  // RotationPiece::orientation with |omega| and the axis kept
+      const double half = 0.5 * omega * (t - spin->t0);
+      const double c = std::cos(half), s = std::sin(half);
+      const Quat step(c, s * axis.x(), s * axis.y(), s * axis.z());
+      p.rotation = (step * spin->q0).normalized().toRotationMatrix();
+    } else {
+      p.rotation = m->rotations().orientation(body, t).toRotationMatrix();
+    }
     return p;
   }
 
