@@ -118,3 +118,44 @@ TEST_CASE("convex_distance bounds hold on random hulls and poses", "[queries][gj
   CHECK(separated > 50);
   CHECK(overlapping > 50);
 }
+
+TEST_CASE("convex_distance: a warm start changes no certificate, and the gap along direction is at least lower",
+          "[queries][gjk]") {
+  std::mt19937_64 rng(2626);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto random_hull = [&] {
+    std::vector<Vec3> pts;
+    for (int i = 0; i < 8; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 0.25 * u(rng));
+    return ccd::make_hull_shape(pts);
+  };
+  auto random_rotation = [&] {
+    return Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+  };
+  int separated = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const ccd::Shape a = random_hull(), b = random_hull();
+    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation());
+    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 1.5, random_rotation());
+    const ConvexDistance cold = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb);
+    ccd::DistanceOptions o;
+    o.start_direction = Vec3(u(rng), u(rng), u(rng));  // any guess, good or bad
+    const ConvexDistance warm = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb, o);
+    REQUIRE(warm.status != Status::Failed);
+    // Both bracket the same distance.
+    CHECK(std::max(cold.lower, warm.lower) <= std::min(cold.upper, warm.upper));
+    if (cold.lower > 1e-6) CHECK(warm.status == Status::Separated);
+    if (cold.upper < -1e-6) CHECK(warm.status == Status::Overlapping);
+    // The certificate the advancement relies on: along `direction`, every point of B is at
+    // least `lower` further than every point of A.
+    for (const ConvexDistance& d : {cold, warm}) {
+      if (d.status != Status::Separated) continue;
+      ++separated;
+      double amax = -1e300, bmin = 1e300;
+      for (const Vec3& p : a.points) amax = std::max(amax, d.direction.dot(pa.centre + pa.rotation * p));
+      for (const Vec3& p : b.points) bmin = std::min(bmin, d.direction.dot(pb.centre + pb.rotation * p));
+      CHECK(bmin - amax >= d.lower);
+      CHECK(std::fabs(d.direction.norm() - 1.0) < 1e-12);
+    }
+  }
+  CHECK(separated > 100);
+}
