@@ -10,13 +10,6 @@
 namespace ccd {
 namespace {
 
-ConvexDistance distance_at(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double t, double tolerance) {
-  const Pose pa = m.pose(a, t), pb = m.pose(b, t);
-  DistanceOptions o;
-  o.tolerance = tolerance;
-  return convex_distance(m.proxy(a), {pa.centre, pa.rotation}, m.proxy(b), {pb.centre, pb.rotation}, o);
-}
-
 // The advancement from time t (see the header): a lower bound on the time to the first
 // contact after t, given that the gap of the posed shapes along the unit direction n
 // (from A to B) is at least `gap` > 0 at t. Two bounds on the rate at which that gap
@@ -236,24 +229,27 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
     return r;
   }
   if (!(d.lower <= tol)) return r;  // iteration limit: conservative, unbracketed
+  auto overlapping_at = [&](double x) {
+    const Pose qa = sa.pose(x), qb = sb.pose(x);
+    return convex_distance(sa.proxy, {qa.centre, qa.rotation}, sb.proxy, {qb.centre, qb.rotation}, dopt).status ==
+           ConvexDistance::Status::Overlapping;
+  };
   // The bracket's far end: the first probe with a certified overlap, then halved.
   double h = mu > 0.0 ? tol / mu : in.t1 - t;
   double hi = inf;
   while (t + h <= in.t1 && h > 0.0) {
-    if (distance_at(m, a, b, t + h, 0.25 * tol).status == ConvexDistance::Status::Overlapping) {
+    if (overlapping_at(t + h)) {
       hi = t + h;
       break;
     }
     h *= 2.0;
   }
-  if (hi == inf && t < in.t1 &&
-      distance_at(m, a, b, in.t1, 0.25 * tol).status == ConvexDistance::Status::Overlapping)
-    hi = in.t1;
+  if (hi == inf && t < in.t1 && overlapping_at(in.t1)) hi = in.t1;
   if (hi == inf) return r;  // a near miss within the tolerance (or a contact not certified)
   for (int k = 0; k < 60 && hi > t; ++k) {
     const double mid = t + 0.5 * (hi - t);
     if (mid <= t || mid >= hi) break;
-    if (distance_at(m, a, b, mid, 0.25 * tol).status != ConvexDistance::Status::Overlapping) break;
+    if (!overlapping_at(mid)) break;
     hi = mid;
   }
   r.toi_error = hi - t;
