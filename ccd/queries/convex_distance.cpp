@@ -32,7 +32,10 @@ Vec3 closest_on_segment(Simplex& s) {
     s.n = 1;
     return b;
   }
-  return a + ab * (t / len2);
+  // The part of a perpendicular to ab, from cross products: near the segment the
+  // barycentric form a + ab t / |ab|^2 cancels to an error of ulps of |a|, which tilts a
+  // short v by a large angle; the cross products keep v's direction to a few ulps.
+  return ab.cross(a.cross(ab)) / len2;
 }
 
 Vec3 closest_on_triangle(Simplex& s) {
@@ -83,7 +86,10 @@ Vec3 closest_on_triangle(Simplex& s) {
     }
     return best;
   }
-  return a + ab * (vb / denom) + ac * (vc / denom);
+  // Inside the face: the origin's projection on the face's plane, from its normal (as for
+  // the segment: the barycentric form cancels when the face passes close to the origin).
+  const Vec3 n = ab.cross(ac);
+  return n * (a.dot(n) / n.squaredNorm());
 }
 
 // Tetrahedron: the closest point over the faces the origin is outside of; when it is
