@@ -3,17 +3,172 @@
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/queries/convex_distance.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace ccd {
 namespace {
 
-ConvexDistance distance_at(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double t, double tolerance) {
-  const Pose pa = m.pose(a, t), pb = m.pose(b, t);
-  DistanceOptions o;
-  o.tolerance = tolerance;
-  return convex_distance(m.proxy(a), {pa.centre, pa.rotation}, m.proxy(b), {pb.centre, pb.rotation}, o);
+// The advancement from time t (see the header): a lower bound on the time to the first
+// contact after t, given that the gap of the posed shapes along the unit direction n
+// (from A to B) is at least `gap` > 0 at t. Two bounds on the rate at which that gap
+// shrinks, both valid, each giving a time; the larger time is kept:
+//  - mu, the pair's point-speed bound (every point of A and B together), and the same
+//    along n: n.v_A - n.v_B (extremes at the trajectory pieces' ends, n.v being linear on
+//    each) plus |n x omega| R per body (a point at r from the centre moves at
+//    omega x r, and n.(omega x r) = r.(n x omega) <= |n x omega| R);
+//  - when both bodies keep one spin over the rest of the step, the same with the supports
+//    of the posed shapes: r.(n x omega_A) is at most h_A(u_A) + r_A |u_A| at t, u_A =
+//    n x omega_A, h_A the support of A's posed core, and grows no faster than
+//    |u_A| |omega_A| rho_A, rho_A = max |core point| (the point turns about omega at
+//    |omega_A|); same for B with u_B = omega_B x n. The rate is then at most c0 + c1 s
+//    after s seconds, and the gap cannot close before c0 s + c1 s^2 / 2 = gap.
+// Every dot product, norm and the root are within a few ulps of the magnitudes summed in
+// `scale`: rates are rounded up by 64 ulps of it and times down.
+// One body over a step [t0, t1]: its trajectory piece and spin piece when one of each
+// covers the whole step (then poses need no search), and what the advancement needs of its
+// shape, computed once per query.
+struct BodyStep {
+  const RigidMotion* m = nullptr;
+  std::uint32_t body = 0;
+  ConvexProxy proxy;
+  const Piece* piece = nullptr;              ///< covers [t0, t1], or null
+  const RotationPiece* spin = nullptr;       ///< covers [t0, t1], or null
+  bool turning = false;                      ///< some spin over the step
+  Mat3 still{Mat3::Identity()};              ///< the rotation when not turning
+  double omega = 0.0;                        ///< |omega| of `spin`
+  Vec3 axis{Vec3::Zero()};                   ///< omega / |omega| of `spin`
+  /// max distance of a core point from the spin axis through the centre (rounded up);
+  /// max |core point| when the spin changes in the step
+  double rho = 0.0;
+  double radius = 0.0;                       ///< enclosing radius
+
+  BodyStep(const RigidMotion& motion, std::uint32_t b, double t0, double t1) : m(&motion), body(b), proxy(motion.proxy(b)) {
+    radius = motion.enclosing_radius(b);
+    for (const Piece& q : motion.centres().pieces(b))
+      if (q.t0 <= t0 && q.t1 >= t1) piece = &q;
+    if (!motion.rotations().empty()) {
+      int covering = 0;
+      for (const RotationPiece& p : motion.rotations().pieces(b)) {
+        if (p.t1 < t0 || p.t0 > t1) continue;
+        ++covering;
+        turning = turning || !p.omega.isZero(0.0);
+        spin = &p;
+      }
+      if (covering != 1) spin = nullptr;
+    }
+    if (!turning) still = motion.pose(b, t0).rotation;
+    double rho2 = 0.0;
+    for (const Vec3& q : proxy.points) rho2 = std::max(rho2, q.squaredNorm());
+    rho = std::sqrt(rho2);
+    if (spin && turning) {
+      omega = spin->omega.norm();
+      axis = spin->omega / omega;
+      // The spin axis in the body frame is fixed while the body turns about it: q0^-1 axis.
+      // |q x axis| has no cancellation; the axis itself is within a few ulps.
+      const Vec3 body_axis = spin->q0.conjugate() * axis;
+      double perp = 0.0;
+      for (const Vec3& q : proxy.points) perp = std::max(perp, q.cross(body_axis).norm());
+      const double eps = std::numeric_limits<double>::epsilon();
+      rho = std::min(rho, perp * (1.0 + 16.0 * eps) + 16.0 * eps * rho);
+    }
+  }
+
+  Pose pose(double t) const {
+    Pose p;
+    p.centre = piece ? piece->position(t) : m->centres().position(body, t);
+    if (!turning) {
+      p.rotation = still;
+    } else if (spin) {  // RotationPiece::orientation with |omega| and the axis kept
+      const double half = 0.5 * omega * (t - spin->t0);
+      const double c = std::cos(half), s = std::sin(half);
+      const Quat step(c, s * axis.x(), s * axis.y(), s * axis.z());
+      p.rotation = (step * spin->q0).normalized().toRotationMatrix();
+    } else {
+      p.rotation = m->rotations().orientation(body, t).toRotationMatrix();
+    }
+    return p;
+  }
+
+  // Extremes of n.v over [u0, u1] (n.v is linear on each trajectory piece); adds the
+  // magnitudes to `scale`.
+  void velocity_along(const Vec3& n, double u0, double u1, double& lo, double& hi, double& scale) const {
+    auto use = [&](const Vec3& v) {
+      const double x = n.dot(v);
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+      scale += v.cwiseAbs().sum();
+    };
+    if (piece && piece->a.isZero(0.0)) return use(piece->v);
+    for (const Piece& q : m->centres().pieces(body)) {
+      if (q.t1 < u0 || q.t0 > u1) continue;
+      use(q.velocity(std::max(u0, q.t0)));
+      use(q.velocity(std::min(u1, q.t1)));
+    }
+  }
+};
+
+// The spin's share of the gap's shrinking rate for one body (sign +1: A, u = n x omega;
+// -1: B, u = omega x n): `global` = max |u| R over the spins in [u0, u1]; when one spin
+// covers the step, c0 = h(u) + r |u| at the pose and c1 = |u| |omega| rho.
+struct SpinTerm {
+  bool single = false;
+  double c0 = 0.0, c1 = 0.0, global = 0.0, scale = 0.0;
+};
+
+SpinTerm spin_term(const BodyStep& x, const Pose& pose, const Vec3& n, double sign, double u0, double u1) {
+  SpinTerm s;
+  if (!x.turning) {
+    s.single = true;
+    return s;
+  }
+  if (!x.spin) {
+    for (const RotationPiece& p : x.m->rotations().pieces(x.body))
+      if (p.t1 >= u0 && p.t0 <= u1) s.global = std::max(s.global, n.cross(p.omega).norm());
+    s.global *= x.radius;
+    s.scale = s.global;
+    return s;
+  }
+  s.single = true;
+  const Vec3 u = sign * n.cross(x.spin->omega);
+  const double un = u.norm();
+  s.global = un * x.radius;
+  s.scale = s.global;
+  if (un == 0.0) return s;
+  const Vec3 local = pose.rotation.transpose() * u;
+  s.c0 = x.proxy.points[x.proxy.support_index(local)].dot(local) + x.proxy.radius * un;
+  s.c1 = un * x.omega * x.rho;
+  s.scale += un * (x.rho + x.proxy.radius);
+  return s;
+}
+
+double advance(const BodyStep& a, const BodyStep& b, const Pose& pa, const Pose& pb, const Vec3& n, double gap,
+               double mu, double u0, double u1) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double eps = std::numeric_limits<double>::epsilon();
+  double a_lo = inf, a_hi = -inf, b_lo = inf, b_hi = -inf, scale = 0.0;
+  a.velocity_along(n, u0, u1, a_lo, a_hi, scale);
+  b.velocity_along(n, u0, u1, b_lo, b_hi, scale);
+  const SpinTerm sa = spin_term(a, pa, n, 1.0, u0, u1), sb = spin_term(b, pb, n, -1.0, u0, u1);
+  const double linear = a_hi - b_lo;
+  scale += sa.scale + sb.scale;
+  const double allowance = 64.0 * eps * scale;
+  auto time_at_rate = [&](double rate) { return rate > 0.0 ? gap / rate * (1.0 - 4.0 * eps) : inf; };
+  double best = time_at_rate(std::min(mu, linear + sa.global + sb.global + allowance));
+  if (sa.single && sb.single) {
+    const double c0 = linear + sa.c0 + sb.c0 + allowance;
+    const double c1 = (sa.c1 + sb.c1) * (1.0 + 64.0 * eps);
+    double s2 = 0.0;
+    if (c1 == 0.0) {
+      s2 = time_at_rate(c0);
+    } else {
+      const double root = std::sqrt(c0 * c0 + 2.0 * c1 * gap);
+      s2 = (c0 >= 0.0 ? 2.0 * gap / (c0 + root) : (root - c0) / c1) * (1.0 - 16.0 * eps);
+    }
+    best = std::max(best, s2);
+  }
+  return best;
 }
 
 }  // namespace
@@ -28,7 +183,11 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
   const double inf = std::numeric_limits<double>::infinity();
   const double tol = options.tolerance;
   ContactResult r;
-  ConvexDistance d = distance_at(m, a, b, in.t0, 0.25 * tol);
+  const BodyStep sa(m, a, in.t0, in.t1), sb(m, b, in.t0, in.t1);
+  Pose pa = sa.pose(in.t0), pb = sb.pose(in.t0);
+  DistanceOptions dopt;
+  dopt.tolerance = 0.25 * tol;
+  ConvexDistance d = convex_distance(sa.proxy, {pa.centre, pa.rotation}, sb.proxy, {pb.centre, pb.rotation}, dopt);
   if (iterations) *iterations = 1;
   if (d.status == ConvexDistance::Status::Failed) {
     r.status = QueryStatus::Failed;
@@ -51,10 +210,15 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
     }
     if (!(d.lower > tol) || it >= options.max_iterations) break;
     if (mu == 0.0) return r;  // nothing moves and the pair is apart: Miss
-    const double next = t + d.lower / mu;
-    if (next > in.t1) return r;  // Miss: no contact in [t0, t1]
+    // The gap along d.direction is at least d.lower now: no contact before t + step.
+    const double step = advance(sa, sb, pa, pb, d.direction, d.lower, mu, t, in.t1);
+    const double next = t + step;
+    if (!(next <= in.t1)) return r;  // Miss: no contact in [t0, t1]
     t = next;
-    d = distance_at(m, a, b, t, 0.25 * tol);
+    pa = sa.pose(t);
+    pb = sb.pose(t);
+    dopt.start_direction = d.direction;  // warm start from the last separating direction
+    d = convex_distance(sa.proxy, {pa.centre, pa.rotation}, sb.proxy, {pb.centre, pb.rotation}, dopt);
   }
   r.status = QueryStatus::Hit;
   r.toi = t;
@@ -65,24 +229,27 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
     return r;
   }
   if (!(d.lower <= tol)) return r;  // iteration limit: conservative, unbracketed
+  auto overlapping_at = [&](double x) {
+    const Pose qa = sa.pose(x), qb = sb.pose(x);
+    return convex_distance(sa.proxy, {qa.centre, qa.rotation}, sb.proxy, {qb.centre, qb.rotation}, dopt).status ==
+           ConvexDistance::Status::Overlapping;
+  };
   // The bracket's far end: the first probe with a certified overlap, then halved.
   double h = mu > 0.0 ? tol / mu : in.t1 - t;
   double hi = inf;
   while (t + h <= in.t1 && h > 0.0) {
-    if (distance_at(m, a, b, t + h, 0.25 * tol).status == ConvexDistance::Status::Overlapping) {
+    if (overlapping_at(t + h)) {
       hi = t + h;
       break;
     }
     h *= 2.0;
   }
-  if (hi == inf && t < in.t1 &&
-      distance_at(m, a, b, in.t1, 0.25 * tol).status == ConvexDistance::Status::Overlapping)
-    hi = in.t1;
+  if (hi == inf && t < in.t1 && overlapping_at(in.t1)) hi = in.t1;
   if (hi == inf) return r;  // a near miss within the tolerance (or a contact not certified)
   for (int k = 0; k < 60 && hi > t; ++k) {
     const double mid = t + 0.5 * (hi - t);
     if (mid <= t || mid >= hi) break;
-    if (distance_at(m, a, b, mid, 0.25 * tol).status != ConvexDistance::Status::Overlapping) break;
+    if (!overlapping_at(mid)) break;
     hi = mid;
   }
   r.toi_error = hi - t;

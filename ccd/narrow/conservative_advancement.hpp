@@ -5,8 +5,14 @@
 // (ccd/motion/rigid_motion.hpp; NarrowInput::rigid must be set).
 //
 // Step query [t0, t1]: with mu = max_point_speed(a) + max_point_speed(b) over the step,
-// the distance cannot shrink faster than mu, so from a time t at which the distance is at
-// least `lower` no contact happens before t + lower / mu. Advancing t by lower / mu from t0:
+// the distance cannot shrink faster than mu. At a time t GJK certifies a gap of at least
+// `lower` along a unit direction n from A to B; the advancement steps t by the larger of
+// two lower bounds on the time that gap needs to close: lower / rate with rate the
+// smaller of mu and the approach speed along n (n.v_A - n.v_B plus |n x omega| R per
+// body), and, when each body keeps one spin over the rest of the step, the root of
+// c0 s + c1 s^2 / 2 = lower with c0 from the posed shapes' supports along n x omega and
+// c1 from how fast those supports can grow as the bodies turn (docs/rigid_bodies.md).
+// Each distance is warm-started from the previous direction. Advancing from t0:
 //  - past t1: Miss (certified: no contact in [t0, t1]);
 //  - certified overlap at t0: Overlapping, toi = t0, toi_error 0;
 //  - lower <= tolerance at t (touching within the tolerance, or closer): the first

@@ -32,7 +32,10 @@ Vec3 closest_on_segment(Simplex& s) {
     s.n = 1;
     return b;
   }
-  return a + ab * (t / len2);
+  // The part of a perpendicular to ab, from cross products: near the segment the
+  // barycentric form a + ab t / |ab|^2 cancels to an error of ulps of |a|, which tilts a
+  // short v by a large angle; the cross products keep v's direction to a few ulps.
+  return ab.cross(a.cross(ab)) / len2;
 }
 
 Vec3 closest_on_triangle(Simplex& s) {
@@ -83,7 +86,10 @@ Vec3 closest_on_triangle(Simplex& s) {
     }
     return best;
   }
-  return a + ab * (vb / denom) + ac * (vc / denom);
+  // Inside the face: the origin's projection on the face's plane, from its normal (as for
+  // the segment: the barycentric form cancels when the face passes close to the origin).
+  const Vec3 n = ab.cross(ac);
+  return n * (a.dot(n) / n.squaredNorm());
 }
 
 // Tetrahedron: the closest point over the faces the origin is outside of; when it is
@@ -121,11 +127,37 @@ Vec3 closest_on_tetrahedron(Simplex& s, bool& inside, double& depth) {
   return best;
 }
 
-Vec3 support(const ConvexProxy& x, const ProxyPose& pose, const Vec3& offset, const Vec3& d) {
-  const Vec3 local = pose.rotation.transpose() * d;
-  const Vec3 turned = pose.rotation * x.points[x.support_index(local)];
-  return offset + turned;
-}
+// A proxy posed in the frame centred on A's centre. Proxies of up to kPosedPoints points
+// (spheres, capsules, boxes, small hulls) are turned once per call and their supports are
+// plain maxima of dot products; larger hulls turn the direction instead.
+constexpr std::size_t kPosedPoints = 16;
+class PosedProxy {
+ public:
+  PosedProxy(const ConvexProxy& x, const ProxyPose& pose, const Vec3& offset) : x_(x), pose_(pose), offset_(offset) {
+    n_ = x.points.size() <= kPosedPoints ? x.points.size() : 0;
+    for (std::size_t i = 0; i < n_; ++i) posed_[i] = offset + pose.rotation * x.points[i];
+  }
+  Vec3 support(const Vec3& d) const {
+    if (n_ == 0) return offset_ + pose_.rotation * x_.points[x_.support_index(pose_.rotation.transpose() * d)];
+    std::size_t best = 0;
+    double best_dot = posed_[0].dot(d);
+    for (std::size_t i = 1; i < n_; ++i) {
+      const double y = posed_[i].dot(d);
+      if (y > best_dot) {
+        best_dot = y;
+        best = i;
+      }
+    }
+    return posed_[best];
+  }
+
+ private:
+  const ConvexProxy& x_;
+  const ProxyPose& pose_;
+  Vec3 offset_;
+  std::size_t n_ = 0;
+  Vec3 posed_[kPosedPoints];
+};
 
 // When the cores overlap but the simplex ends on the origin (symmetric, often dyadic
 // configurations), the overlap is certified another way: supports along the 4 directions of
@@ -153,9 +185,9 @@ double overlap_depth_by_supports(const Support& diff_support) {
 }
 
 double proxy_extent(const ConvexProxy& x) {
-  double m = 0.0;
-  for (const Vec3& q : x.points) m = std::max(m, q.norm());
-  return m + x.radius;
+  double m2 = 0.0;  // sqrt is monotonic and correctly rounded: sqrt(max |q|^2) = max |q|
+  for (const Vec3& q : x.points) m2 = std::max(m2, q.squaredNorm());
+  return std::sqrt(m2) + x.radius;
 }
 
 }  // namespace
@@ -168,16 +200,14 @@ ConvexDistance convex_distance(const ConvexProxy& a, const ProxyPose& pa, const 
       64.0 * std::numeric_limits<double>::epsilon() * (ob.norm() + proxy_extent(a) + proxy_extent(b));
   const double radii = a.radius + b.radius;
   const Vec3 zero = Vec3::Zero();
-  auto diff_support = [&](const Vec3& d) -> Vec3 {
-    const Vec3 back = -d;
-    const Vec3 sa = support(a, pa, zero, d);
-    const Vec3 sb = support(b, pb, ob, back);
-    return sa - sb;
-  };
+  const PosedProxy posed_a(a, pa, zero), posed_b(b, pb, ob);
+  auto diff_support = [&](const Vec3& d) -> Vec3 { return posed_a.support(d) - posed_b.support(-d); };
 
   Simplex s;
-  // Start from a support point (an extreme point of the difference) along B -> A.
-  Vec3 v = diff_support(ob.squaredNorm() > 0.0 ? Vec3(-ob) : Vec3(Vec3::UnitX()));
+  // Start from the support of the difference along A -> B (A's point furthest towards B
+  // minus B's furthest towards A: near the closest pair), or along the warm-start guess.
+  const bool warm = options.start_direction.squaredNorm() > 0.0;
+  Vec3 v = diff_support(warm ? options.start_direction : ob.squaredNorm() > 0.0 ? Vec3(ob) : Vec3(Vec3::UnitX()));
   s.w[0] = v;
   s.n = 1;
   double lower = -std::numeric_limits<double>::infinity();

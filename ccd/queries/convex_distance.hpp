@@ -43,6 +43,10 @@ struct DistanceOptions {
   static constexpr int default_max_iterations = 64;
   double tolerance = default_tolerance;  ///< metres: stop when upper - lower <= this
   int max_iterations = default_max_iterations;
+  /// Warm start: a guess of the separating direction from A to B (e.g. the previous
+  /// answer's `direction`); zero: start along the centres' offset. Changes only the
+  /// iterations, never the certificate.
+  Vec3 start_direction{Vec3::Zero()};
 };
 
 struct ConvexDistance {

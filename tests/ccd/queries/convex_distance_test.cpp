@@ -118,3 +118,76 @@ TEST_CASE("convex_distance bounds hold on random hulls and poses", "[queries][gj
   CHECK(separated > 50);
   CHECK(overlapping > 50);
 }
+
+TEST_CASE("convex_distance: a warm start changes no certificate, and the gap along direction is at least lower",
+          "[queries][gjk]") {
+  std::mt19937_64 rng(2626);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto random_hull = [&] {
+    std::vector<Vec3> pts;
+    for (int i = 0; i < 8; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 0.25 * u(rng));
+    return ccd::make_hull_shape(pts);
+  };
+  auto random_rotation = [&] {
+    return Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+  };
+  int separated = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const ccd::Shape a = random_hull(), b = random_hull();
+    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation());
+    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 1.5, random_rotation());
+    const ConvexDistance cold = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb);
+    ccd::DistanceOptions o;
+    o.start_direction = Vec3(u(rng), u(rng), u(rng));  // any guess, good or bad
+    const ConvexDistance warm = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb, o);
+    REQUIRE(warm.status != Status::Failed);
+    // Both bracket the same distance.
+    CHECK(std::max(cold.lower, warm.lower) <= std::min(cold.upper, warm.upper));
+    if (cold.lower > 1e-6) CHECK(warm.status == Status::Separated);
+    if (cold.upper < -1e-6) CHECK(warm.status == Status::Overlapping);
+    // The certificate the advancement relies on: along `direction`, every point of B is at
+    // least `lower` further than every point of A.
+    for (const ConvexDistance& d : {cold, warm}) {
+      if (d.status != Status::Separated) continue;
+      ++separated;
+      double amax = -1e300, bmin = 1e300;
+      for (const Vec3& p : a.points) amax = std::max(amax, d.direction.dot(pa.centre + pa.rotation * p));
+      for (const Vec3& p : b.points) bmin = std::min(bmin, d.direction.dot(pb.centre + pb.rotation * p));
+      CHECK(bmin - amax >= d.lower);
+      CHECK(std::fabs(d.direction.norm() - 1.0) < 1e-12);
+    }
+  }
+  CHECK(separated > 100);
+}
+
+TEST_CASE("convex_distance: near-tangent faces and edges keep a bracket of the tolerance", "[queries][gjk]") {
+  // Two crates face to face, the upper one turned about the shared normal, the pair turned
+  // as a whole and put far from the origin: the distance is the gap g (1e-9 to 1e-3 m)
+  // however close the faces; the bracket must close to the tolerance, not stop nanometres
+  // short. Then the upper crate tilted about x by g: an edge over a face at gap g.
+  std::mt19937_64 rng(1717);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const ccd::Shape crate = ccd::make_box_shape(Vec3(0.5, 0.3, 0.2));
+  for (int trial = 0; trial < 400; ++trial) {
+    const double g = std::pow(10.0, -9.0 + 6.0 * u(rng));
+    const Eigen::Matrix3d whole =
+        Eigen::Quaterniond(u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5, u(rng) - 0.5).normalized().toRotationMatrix();
+    const Vec3 far = Vec3(1, -1, 1) * (trial % 2 ? 0.0 : 1024.0);
+    const bool edge = trial % 4 >= 2;
+    const Eigen::Matrix3d turn =
+        edge ? Eigen::AngleAxisd(0.5, Vec3::UnitX()).toRotationMatrix()
+             : Eigen::AngleAxisd(6.28 * u(rng), Vec3::UnitZ()).toRotationMatrix();
+    // Edge case: turned by 1/2 rad about x, the upper crate's lowest edge is
+    // 0.3 sin(1/2) + 0.2 cos(1/2) below its centre.
+    const double drop = edge ? 0.3 * std::sin(0.5) + 0.2 * std::cos(0.5) : 0.2;
+    const Vec3 offset(0.1 * u(rng), 0.1 * u(rng), 0.2 + g + drop);
+    const ProxyPose pa = at(far, whole);
+    const ProxyPose pb = at(far + whole * offset, whole * turn);
+    const ConvexDistance d = ccd::convex_distance(crate.proxy(), pa, crate.proxy(), pb);
+    INFO("trial " << trial << " gap " << g << " lower " << d.lower << " upper " << d.upper);
+    CHECK(d.upper - d.lower <= 2e-9);
+    CHECK(d.lower <= g + 1e-12);
+    CHECK(d.upper >= g - 1e-12);
+    if (g > 4e-9) CHECK(d.status == Status::Separated);
+  }
+}

@@ -1,0 +1,350 @@
+// FCL 0.7's continuous collision side by side with ccdlab's conservative advancement on
+// spinning rigid bodies (docs/peers.md, "Spinning bodies: FCL's continuous collision").
+//
+// The horizon is cut into `steps` equal steps. For every step and every pair of bodies
+// whose enclosing spheres' swept boxes overlap in it (pairs of two spheres excepted: no
+// rotation matters there), each method answers "first contact in [t0, t1]?":
+//  - fcl_default:      fcl::continuousCollide(geometry, tf at t0, tf at t1, ...) with a
+//                      default ContinuousCollisionRequestd: naive solver, translation-only
+//                      motion (the start orientation is kept), 10 samples;
+//  - fcl_naive_interp: naive solver, 10 samples of fcl::InterpMotion;
+//  - fcl_ca:           FCL's conservative advancement (libccd GJK) on fcl::InterpMotion;
+//  - ccdlab_ca:        ccdlab's narrow table (conservative advancement on the certified
+//                      GJK distance), the entry the step pipeline calls.
+// fcl::InterpMotion turns the body about a fixed world axis at a constant rate about its
+// reference point while that point moves on a straight line at constant speed: with the
+// reference point at the body's origin (its centre of rotation) this is ccdlab's motion
+// (constant world-frame angular velocity, q(t) = exp((t - t0) omega / 2) q0) as long as the
+// centre moves in a straight line at constant speed over the step and the step's turn is
+// below pi (InterpMotion takes the shortest rotation between the two orientations).
+// Pair-steps where that does not hold (a wall reflection, an acceleration or a spin change
+// inside the step, a turn >= pi) are skipped and counted. The motion is built with the
+// constructor that takes the reference point: the two-transform one leaves it unset in
+// FCL 0.7. fcl::ScrewMotion is not used: a screw moves the centre along a helix unless the
+// velocity is parallel to the spin axis.
+//
+// Truth per pair-step, from the certified rigid truth (`ccdlab truth`, read with --truth,
+// or computed by the same function when --truth is absent): contact when an event that is
+// not grazing has a certified overlap in the step ([enter + enter_error, exit - exit_error]
+// meets [t0, t1]), none when no event's outer bracket [enter - enter_error, exit +
+// exit_error] meets it, ambiguous otherwise (not counted). A miss: truth says contact, the
+// method none. A false alarm: the converse. Late: a found contact reported after the
+// first time in the step at which the overlap is certified.
+//
+// Time per query: the thread's CPU time for all the queries of one method, median of
+// --repeats passes, divided by the query count. FCL gets its transforms at t0 and t1 made
+// beforehand (as a caller of continuousCollide has them); ccdlab evaluates its own poses
+// inside the query.
+//
+//   rigid_peers --scene SCENE.json [--truth TRUTH.json] [--steps=30] [--repeats=5]
+// Exit 2 with one line on bad input; exit 1 when ccdlab_ca misses a contact.
+#include <ccd/motion/rigid_motion.hpp>
+#include <ccd/motion/trajectory.hpp>
+#include <ccd/narrow/narrow_table.hpp>
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_digest.hpp>
+#include <ccd/scene/scene_io.hpp>
+#include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/truth_io.hpp>
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/capsule.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/math/motion/interp_motion.h>
+#include <fcl/narrowphase/continuous_collision.h>
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace {
+
+struct Args {
+  std::string scene;
+  std::string truth;
+  int steps = 30;
+  int repeats = 5;
+};
+
+[[noreturn]] void usage_error(const std::string& what) {
+  std::cerr << "rigid_peers: " << what
+            << " (usage: rigid_peers --scene SCENE.json [--truth TRUTH.json] [--steps=N] [--repeats=N])\n";
+  std::exit(2);
+}
+
+int parse_count(const std::string& name, const std::string& text) {
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < 1 || v > 1000000) usage_error(name + ": must be an integer in [1, 1000000]");
+  return static_cast<int>(v);
+}
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string s = argv[i];
+    auto value = [&](const std::string& flag) -> std::string {
+      if (s.rfind(flag + "=", 0) == 0) return s.substr(flag.size() + 1);
+      if (i + 1 >= argc) usage_error(flag + ": needs a value");
+      return argv[++i];
+    };
+    if (s == "--scene" || s.rfind("--scene=", 0) == 0) a.scene = value("--scene");
+    else if (s == "--truth" || s.rfind("--truth=", 0) == 0) a.truth = value("--truth");
+    else if (s == "--steps" || s.rfind("--steps=", 0) == 0) a.steps = parse_count("--steps", value("--steps"));
+    else if (s == "--repeats" || s.rfind("--repeats=", 0) == 0) a.repeats = parse_count("--repeats", value("--repeats"));
+    else usage_error("unknown argument " + s);
+  }
+  if (a.scene.empty()) usage_error("--scene is required");
+  return a;
+}
+
+double thread_cpu_s() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// A query: one pair over one step, with what the truth says.
+enum class Truth : std::uint8_t { Contact, None, Ambiguous };
+struct Query {
+  std::uint32_t a = 0, b = 0;
+  double t0 = 0.0, t1 = 0.0;
+  Truth truth = Truth::None;
+  double first_certain = 0.0;  ///< Contact: the first time in the step with a certified overlap
+  fcl::Transform3d a0, a1, b0, b1;  ///< FCL's poses at t0 and t1 (made before the timing)
+};
+
+struct Answer {
+  bool found = false;
+  double toi = 0.0;
+};
+
+struct Tally {
+  std::size_t contact = 0, misses = 0, false_alarms = 0, late = 0;
+  double us_per_query = 0.0;
+};
+
+// FCL's view of a body: its geometry in FCL's conventions and the fixed rotation from
+// FCL's shape frame to ccdlab's body frame (FCL's capsule lies along z, ccdlab's along x).
+struct FclBody {
+  std::shared_ptr<fcl::CollisionGeometryd> geometry;
+  fcl::Matrix3d to_body = fcl::Matrix3d::Identity();
+};
+
+FclBody fcl_body(const ccd::Scene& scene, std::size_t i) {
+  FclBody f;
+  const std::int32_t s = scene.rigid.empty() ? ccd::kNoShape : scene.rigid[i].shape;
+  if (s == ccd::kNoShape) {
+    f.geometry = std::make_shared<fcl::Sphered>(scene.bodies[i].radius);
+    return f;
+  }
+  const ccd::Shape& shape = scene.shapes[static_cast<std::size_t>(s)];
+  switch (shape.kind) {
+    case ccd::ShapeKind::Sphere: f.geometry = std::make_shared<fcl::Sphered>(shape.radius); break;
+    case ccd::ShapeKind::Capsule:
+      f.geometry = std::make_shared<fcl::Capsuled>(shape.radius, 2.0 * shape.half_length);
+      f.to_body << 0, 0, 1, 0, 1, 0, -1, 0, 0;  // FCL's z axis onto ccdlab's x axis
+      break;
+    case ccd::ShapeKind::Box:
+      f.geometry = std::make_shared<fcl::Boxd>(2.0 * shape.half_extents.x(), 2.0 * shape.half_extents.y(),
+                                               2.0 * shape.half_extents.z());
+      break;
+    case ccd::ShapeKind::Hull: break;  // not compared (FCL's Convex needs faces)
+  }
+  return f;
+}
+
+fcl::Transform3d fcl_pose(const ccd::RigidMotion& m, const FclBody& f, std::size_t i, double t) {
+  const ccd::Pose p = m.pose(i, t);
+  fcl::Transform3d tf = fcl::Transform3d::Identity();
+  tf.linear() = p.rotation * f.to_body;
+  tf.translation() = p.centre;
+  return tf;
+}
+
+// Whether body i's motion over [t0, t1] is InterpMotion's: one trajectory piece without
+// acceleration, one spin piece, a turn below pi.
+bool interp_exact(const ccd::RigidMotion& m, std::size_t i, double t0, double t1) {
+  const ccd::Piece& q = m.centres().piece_at(i, t0);
+  if (q.t1 < t1 || !q.a.isZero(0.0)) return false;
+  if (m.rotations().empty()) return true;
+  const ccd::RotationPiece& r = m.rotations().piece_at(i, t0);
+  return r.t1 >= t1 && r.omega.norm() * (t1 - t0) < 0.99 * std::numbers::pi;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Args args = parse(argc, argv);
+  try {
+    const ccd::Scene scene = ccd::load_scene(args.scene);
+    const ccd::Trajectories traj(scene);
+    const ccd::RigidMotion motion(scene, traj);
+    const std::size_t n = scene.bodies.size();
+
+    // The certified truth: from `ccdlab truth`, or the same computation here.
+    std::vector<ccd::ContactEvent> events;
+    std::vector<ccd::EventError> errors;
+    if (!args.truth.empty()) {
+      ccd::TruthFile t = ccd::load_truth(args.truth);
+      if (t.scene_sha256 != ccd::scene_digest(scene))
+        throw ccd::InputError(args.truth, "scene_sha256", "is not the digest of " + args.scene);
+      events = std::move(t.events);
+      errors = t.errors.empty() ? std::vector<ccd::EventError>(events.size()) : std::move(t.errors);
+    } else {
+      ccd::RigidTruthResult r = ccd::compute_rigid_truth(motion);
+      events = std::move(r.events);
+      errors = std::move(r.errors);
+    }
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> by_pair;
+    for (std::size_t e = 0; e < events.size(); ++e) by_pair[{events[e].a, events[e].b}].push_back(e);
+
+    std::vector<FclBody> fcl_bodies;
+    for (std::size_t i = 0; i < n; ++i) fcl_bodies.push_back(fcl_body(scene, i));
+
+    // The queries.
+    std::vector<Query> queries;
+    std::size_t skipped_motion = 0, skipped_hull = 0, ambiguous = 0;
+    const double dt = scene.horizon / args.steps;
+    for (int k = 0; k < args.steps; ++k) {
+      const double t0 = k * dt, t1 = k + 1 == args.steps ? scene.horizon : (k + 1) * dt;
+      std::vector<ccd::Aabb> boxes(n);
+      for (std::size_t i = 0; i < n; ++i) boxes[i] = traj.swept_bounds(i, t0, t1);
+      for (std::uint32_t a = 0; a < n; ++a)
+        for (std::uint32_t b = a + 1; b < n; ++b) {
+          if (!boxes[a].overlaps(boxes[b])) continue;
+          if (motion.kind(a) == ccd::ShapeKind::Sphere && motion.kind(b) == ccd::ShapeKind::Sphere) continue;
+          if (!fcl_bodies[a].geometry || !fcl_bodies[b].geometry) {
+            ++skipped_hull;
+            continue;
+          }
+          if (!interp_exact(motion, a, t0, t1) || !interp_exact(motion, b, t0, t1)) {
+            ++skipped_motion;
+            continue;
+          }
+          Query q;
+          q.a = a;
+          q.b = b;
+          q.t0 = t0;
+          q.t1 = t1;
+          bool contact = false, near = false;
+          double first = t1;
+          if (const auto it = by_pair.find({a, b}); it != by_pair.end())
+            for (const std::size_t e : it->second) {
+              const ccd::ContactEvent& ev = events[e];
+              const ccd::EventError& er = errors[e];
+              const double lo = ev.enter + er.enter_error, hi = ev.exit - er.exit_error;
+              if (!er.grazing && lo <= hi && std::max(lo, t0) <= std::min(hi, t1)) {
+                contact = true;
+                first = std::min(first, std::max(lo, t0));
+              } else if (std::max(ev.enter - er.enter_error, t0) <= std::min(ev.exit + er.exit_error, t1)) {
+                near = true;
+              }
+            }
+          q.truth = contact ? Truth::Contact : near ? Truth::Ambiguous : Truth::None;
+          q.first_certain = first;
+          if (q.truth == Truth::Ambiguous) {
+            ++ambiguous;
+            continue;
+          }
+          q.a0 = fcl_pose(motion, fcl_bodies[a], a, t0);
+          q.a1 = fcl_pose(motion, fcl_bodies[a], a, t1);
+          q.b0 = fcl_pose(motion, fcl_bodies[b], b, t0);
+          q.b1 = fcl_pose(motion, fcl_bodies[b], b, t1);
+          queries.push_back(q);
+        }
+    }
+
+    // The methods.
+    fcl::ContinuousCollisionRequestd naive_interp;
+    naive_interp.ccd_motion_type = fcl::CCDM_LINEAR;
+    fcl::ContinuousCollisionRequestd fcl_ca;
+    fcl_ca.ccd_motion_type = fcl::CCDM_LINEAR;
+    fcl_ca.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
+    auto run_fcl = [&](const fcl::ContinuousCollisionRequestd& request, bool interp) {
+      return [&, interp](const Query& q) {
+        const FclBody &fa = fcl_bodies[q.a], &fb = fcl_bodies[q.b];
+        const fcl::Transform3d &a0 = q.a0, &a1 = q.a1, &b0 = q.b0, &b1 = q.b1;
+        fcl::ContinuousCollisionResultd result;
+        if (interp) {
+          const fcl::Vector3d origin = fcl::Vector3d::Zero();
+          const fcl::InterpMotion<double> ma(a0.linear(), a0.translation(), a1.linear(), a1.translation(), origin);
+          const fcl::InterpMotion<double> mb(b0.linear(), b0.translation(), b1.linear(), b1.translation(), origin);
+          fcl::continuousCollide(fa.geometry.get(), &ma, fb.geometry.get(), &mb, request, result);
+        } else {
+          fcl::continuousCollide(fa.geometry.get(), a0, a1, fb.geometry.get(), b0, b1, request, result);
+        }
+        return Answer{result.is_collide, q.t0 + result.time_of_contact * (q.t1 - q.t0)};
+      };
+    };
+    const ccd::NarrowTable& table = ccd::narrow_table();
+    auto run_ccdlab = [&](const Query& q) {
+      ccd::NarrowInput in;
+      in.motion = &traj;
+      in.rigid = &motion;
+      in.t0 = q.t0;
+      in.t1 = q.t1;
+      const ccd::ContactResult r = table.find(motion.kind(q.a), motion.kind(q.b))(in, q.a, q.b);
+      return Answer{r.found(), r.toi};
+    };
+
+    struct Method {
+      const char* name;
+      std::function<Answer(const Query&)> run;
+    };
+    const std::vector<Method> methods = {{"fcl_default", run_fcl(fcl::ContinuousCollisionRequestd{}, false)},
+                                         {"fcl_naive_interp", run_fcl(naive_interp, true)},
+                                         {"fcl_ca", run_fcl(fcl_ca, true)},
+                                         {"ccdlab_ca", run_ccdlab}};
+    std::size_t contacts = 0;
+    for (const Query& q : queries) contacts += q.truth == Truth::Contact;
+    std::printf("scene %s: %zu bodies, horizon %g s, %d steps of %g s\n", args.scene.c_str(), n, scene.horizon,
+                args.steps, dt);
+    std::printf("pair-steps: %zu compared (%zu with a certified contact), %zu ambiguous in the truth, %zu skipped "
+                "(motion not InterpMotion's), %zu skipped (hulls)\n\n",
+                queries.size(), contacts, ambiguous, skipped_motion, skipped_hull);
+    std::printf("| method | contacts | misses | miss %% | false alarms | late | us/query |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    std::size_t ccdlab_misses = 0;
+    for (const Method& m : methods) {
+      std::vector<Answer> answers(queries.size());
+      std::vector<double> times;
+      for (int r = 0; r < args.repeats; ++r) {
+        const double c0 = thread_cpu_s();
+        for (std::size_t i = 0; i < queries.size(); ++i) answers[i] = m.run(queries[i]);
+        times.push_back(thread_cpu_s() - c0);
+      }
+      std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+      Tally t;
+      t.us_per_query = queries.empty() ? 0.0 : 1e6 * times[times.size() / 2] / static_cast<double>(queries.size());
+      for (std::size_t i = 0; i < queries.size(); ++i) {
+        const Query& q = queries[i];
+        if (q.truth == Truth::Contact) {
+          ++t.contact;
+          if (!answers[i].found) ++t.misses;
+          else if (answers[i].toi > q.first_certain + 1e-12 * (q.t1 - q.t0)) ++t.late;
+        } else if (answers[i].found) {
+          ++t.false_alarms;
+        }
+      }
+      if (std::string(m.name) == "ccdlab_ca") ccdlab_misses = t.misses;
+      std::printf("| %s | %zu | %zu | %.1f | %zu | %zu | %.2f |\n", m.name, t.contact, t.misses,
+                  t.contact ? 100.0 * static_cast<double>(t.misses) / static_cast<double>(t.contact) : 0.0,
+                  t.false_alarms, t.late, t.us_per_query);
+    }
+    return ccdlab_misses == 0 ? 0 : 1;
+  } catch (const ccd::InputError& e) {
+    std::cerr << e.what() << "\n";
+    return 2;
+  }
+}
