@@ -65,6 +65,14 @@ Aabb ObbSatBound::build(const StepContext& ctx, std::size_t i) {
     const double slack = rounding_slack(dc.cwiseAbs().maxCoeff() + dh.maxCoeff() + R + growth);
     o.half = local.half + o.axes.transpose().cwiseAbs() * dh;
     o.half.array() += growth + slack;
+    // The enclosing ball's swept box holds the body too: keep it when it is smaller (fast
+    // spin against the sub-interval, theta R near R).
+    const Vec3 ball = dh.array() + (R + slack);
+    if (turns && ball.prod() < o.half.prod()) {
+      o.axes.setIdentity();
+      o.centre = dc;
+      o.half = ball;
+    }
     Aabb& h = hulls_[i * m_ + j];
     h = o.hull();
     grow(h, slack);

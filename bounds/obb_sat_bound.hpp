@@ -11,6 +11,8 @@
 //  - grown by the sweep of the centre: the exact box D of the centre's path over the
 //    sub-interval (reflections included), centred on D's centre and widened by |axes^T| of
 //    D's half-widths.
+// When the swept box of the enclosing ball (world axes, half-widths R + D's) has the smaller
+// volume (fast spin: theta R near R), that box is used instead: it holds the body too.
 // A sphere, and every body of a sphere scene, uses the world axes and no rotation growth:
 // its box is the swept sphere's box on the sub-interval. Box: the union of the M boxes'
 // world hulls. Pair test: in time order, every pair of sub-intervals of a and b that
