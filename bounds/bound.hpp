@@ -19,6 +19,8 @@
 
 namespace ccd {
 
+class RigidMotion;
+
 /// What a bound may know about a body at the start of a step.
 enum class Knowledge {
   Instant,  ///< position at the sample time only (discrete methods)
@@ -70,6 +72,10 @@ struct StepContext {
   const Trajectories* exact = nullptr;   ///< the true motion: given only to Exact bounds
   double acceleration_bound = 0.0;       ///< A for Bounded bounds
   std::optional<WallBox> walls;          ///< the scene's static walls (known to every bound)
+  /// Shapes and prescribed spin of a scene with non-sphere bodies (ccd/motion/rigid_motion.hpp);
+  /// null for sphere scenes. The orientation-aware bounds (frame_aabb, obb, obb_sat) read it;
+  /// every other bound sees each body as its enclosing sphere (BodyState::radius).
+  const RigidMotion* rigid = nullptr;
 };
 
 class Bound {

@@ -2,8 +2,11 @@
 #include <ccd/util/nearest_name.hpp>
 #include <bounds/capsule_bound.hpp>
 #include <bounds/enclosing_sphere_bound.hpp>
+#include <bounds/frame_aabb_bound.hpp>
 #include <bounds/horn_bound.hpp>
 #include <bounds/horn_sat_bound.hpp>
+#include <bounds/obb_bound.hpp>
+#include <bounds/obb_sat_bound.hpp>
 #include <bounds/registry.hpp>
 #include <bounds/sphere_bound.hpp>
 #include <bounds/swept_aabb_bound.hpp>
@@ -34,12 +37,21 @@ constexpr ParameterSpec kHornSatParameters[] = {
     {"pieces", double(HornSatBound::default_pieces), "sub-intervals M of the step, one oriented box each",
      ParameterKind::Integer, {1.0, kMaxPieces}, "pieces"},
 };
+constexpr ParameterSpec kObbSatParameters[] = {
+    {"pieces", double(ObbSatBound::default_pieces),
+     "sub-intervals M of the step, one oriented box each (grown by the turn and the sweep)",
+     ParameterKind::Integer, {1.0, kMaxPieces}, "pieces"},
+};
 
 const BoundInfo kBounds[] = {
     {"sphere", "instant: the sphere at the sample time; test = centre distance <= r1 + r2",
      Knowledge::Instant, true, {}, &make_plain<SphereBound>},
     {"aabb", "instant: the sphere's box at the sample time; test = box overlap only",
      Knowledge::Instant, true, {}, &make_plain<AabbBound>},
+    {"frame_aabb", "instant: the turned shape's tight box at the sample time (recomputed per sample); test = box overlap",
+     Knowledge::Instant, true, {}, &make_plain<FrameAabbBound>},
+    {"obb", "instant: the shape's oriented box at the sample time; test = 15-axis SAT",
+     Knowledge::Instant, true, {}, &make_plain<ObbBound>},
     {"swept_aabb", "exact motion: box of the swept sphere over the step (reflections exact); test = box overlap",
      Knowledge::Exact, true, {}, &make_plain<SweptAabbBound>},
     {"capsule",
@@ -53,6 +65,10 @@ const BoundInfo kBounds[] = {
      Knowledge::Bounded, true, kHornSatParameters, &make_pieces<HornSatBound>},
     {"enclosing_sphere", "bounded |a| <= A: one static sphere around the whole horn; box when near a wall",
      Knowledge::Bounded, true, {}, &make_plain<EnclosingSphereBound>},
+    {"obb_sat",
+     "exact motion and spin: M oriented boxes grown by the turn and the sweep of each sub-interval; "
+     "test = 15-axis SAT per sub-interval; earliest time",
+     Knowledge::Exact, true, kObbSatParameters, &make_pieces<ObbSatBound>},
 };
 
 std::string valid_names() {

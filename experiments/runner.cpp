@@ -146,6 +146,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   ctx.acceleration_bound = in.acceleration_bound;
   ctx.walls = in.scene->box;
   ctx.exact = method.bound.info->knowledge == ccd::Knowledge::Exact ? &traj : nullptr;
+  ctx.rigid = in.rigid;
 
   const auto t_start = Clock::now();
   for (std::uint64_t k = 0; k < steps; ++k) {

@@ -6,7 +6,7 @@ usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--
                                               [--ccdlab PATH]
 
 STUDY is one of: tunnelling, sap-coherence, equal-endpoints, grazing, precision,
-bound-violation, mixed-sizes, scaling, scheduling. Draws STUDY-*.{png,...} into DIR (default
+bound-violation, mixed-sizes, scaling, scheduling, spinning, fit. Draws STUDY-*.{png,...} into DIR (default
 results/studies/STUDY/plots), prints a Markdown summary of the key numbers on standard
 output, then each chart's path. Results files may come in any order: each study sorts
 them by its own variable (N, offset, ratio...), read from the results themselves.
@@ -26,7 +26,7 @@ import plot  # noqa: E402  (sets the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
 
 STUDIES = ("tunnelling", "sap-coherence", "equal-endpoints", "grazing", "precision",
-           "bound-violation", "mixed-sizes", "scaling", "scheduling")
+           "bound-violation", "mixed-sizes", "scaling", "scheduling", "spinning", "fit")
 
 
 def fail(msg):
@@ -99,9 +99,9 @@ def self_check_line(results):
 
 # ---------------------------------------------------------------------------- tunnelling
 
-def tunnelling(results, outdir, formats):
+def tunnelling(results, outdir, formats, study="tunnelling"):
     res = results[0]
-    out = [f"### tunnelling: {plot.title(res)}", "",
+    out = [f"### {study}: {plot.title(res)}", "",
            "missed events per method (columns: dt, s)", ""]
     ds = dts(res)
     out.append("| method | conservative | " + " | ".join(fmt_dt(d) for d in ds) + " |")
@@ -119,11 +119,11 @@ def tunnelling(results, outdir, formats):
     ax.set_ylim(bottom=0)
     ax.set_xlabel("timestep dt (s)")
     ax.set_ylabel("missed contact events")
-    ax.set_title(f"tunnelling: {res['truth']['events']} events; dashed: discrete", fontsize=10)
+    ax.set_title(f"{study}: {res['truth']['events']} events; dashed: discrete", fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
     legend(ax, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     out += ["", self_check_line(results)]
-    return out, save(fig, outdir, "tunnelling-missed-events", formats)
+    return out, save(fig, outdir, f"{study}-missed-events", formats)
 
 
 # ---------------------------------------------------------------------------- sap-coherence
@@ -542,6 +542,54 @@ def time_against(results, outdir, formats, stem, xkey, xlabel, title):
     out += ["", self_check_line(results)]
     return out, save(fig, outdir, stem, formats)
 
+# ---------------------------------------------------------------------------- fit
+
+def fit(results, outdir, formats):
+    """False positives per step against elongation, one panel per generator; the misses
+    of every discrete method (equal: each bound holds the shape at the sample) and of every
+    continuous one (zero) in the table."""
+    gens = []
+    for res in results:
+        g = source(res).get("generator", "?")
+        if g not in gens:
+            gens.append(g)
+    out = ["### fit: false positives per step against elongation", "",
+           "| scene | elongation | " + " | ".join(method_order(results)) + " | missed (discrete) | missed (continuous) |",
+           "|---|---|" + "---|" * (len(method_order(results)) + 2)]
+    fig, axes = plt.subplots(1, len(gens), figsize=(6 * len(gens), 4.5), squeeze=False)
+    for ax, g in zip(axes[0], gens):
+        rs_g = sorted([res for res in results if source(res).get("generator") == g],
+                      key=lambda res: source(res).get("elongation", 0))
+        names = method_order(rs_g)
+        for i, name in enumerate(names):
+            xs, ys = [], []
+            for res in rs_g:
+                r = next((r for r in res["records"] if r["method"] == name), None)
+                if r is not None:
+                    xs.append(source(res)["elongation"])
+                    ys.append(per_step(r, "false_positives"))
+            ax.plot(xs, ys, label=name, linewidth=1.3, markersize=4,
+                    linestyle="-" if any(r["continuous"] for r in rs_g[0]["records"] if r["method"] == name) else "--",
+                    **plot.style(i))
+        for res in rs_g:
+            recs = {r["method"]: r for r in res["records"]}
+            disc = sorted({r["missed"] for r in res["records"] if not r["continuous"]})
+            cont = sorted({r["missed"] for r in res["records"] if r["continuous"]})
+            out.append(f"| {g} | {source(res)['elongation']:g} | "
+                       + " | ".join(f"{per_step(recs[n], 'false_positives'):.1f}" if n in recs else ""
+                                    for n in method_order(results))
+                       + f" | {', '.join(map(str, disc))} | {', '.join(map(str, cont))} |")
+        ax.set_xscale("log", base=2)
+        ax.set_yscale("log")
+        ax.set_xlabel("elongation (largest / smallest half extent)")
+        ax.set_ylabel("false positives per step")
+        ax.set_title(f"{g}: {rs_g[0]['scene']['bodies']} bodies; dashed: discrete", fontsize=10)
+        ax.grid(True, which="both", alpha=0.3)
+    legend(axes[0][-1], loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    out += ["", "false positives per step (columns: methods); misses: the distinct counts over the discrete and "
+            "the continuous methods", "", self_check_line(results)]
+    return out, save(fig, outdir, "fit-false-positives", formats)
+
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
@@ -583,6 +631,10 @@ def main(argv=None):
                                     "r_max / r_min", "broad-phase time against the radius spread")
     elif s == "scheduling":
         lines, paths = scheduling(results, outdir, formats)
+    elif s == "spinning":
+        lines, paths = tunnelling(results, outdir, formats, "spinning")
+    elif s == "fit":
+        lines, paths = fit(results, outdir, formats)
     else:
         lines, paths = time_against(results, outdir, formats, "scaling", lambda r: r["scene"]["bodies"],
                                     "bodies N", "broad-phase time against N")

@@ -96,6 +96,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   ctx.acceleration_bound = acceleration_bound;
   ctx.walls = walls;
   ctx.exact = knowledge_ == Knowledge::Exact ? &motion : nullptr;
+  ctx.rigid = options_.rigid;
 
   const auto state_at = [&](std::uint32_t i, double t) {
     states[i] = {motion.position(i, t), motion.velocity(i, t), motion.radius(i)};

@@ -37,6 +37,7 @@ constexpr ParameterSpec kParameters[] = {
      {0.0, 1.0, false, false}},
     {"fraction", 0.02, "volume fraction of the box filled by the enclosing spheres", ParameterKind::Real,
      kVolumeFraction},
+    kOverlapParameter,
 };
 
 enum class Kind { Sticks, Plates, Crates, Rocks };
@@ -69,7 +70,7 @@ ccd::Scene generate(const ParameterSet& p, Kind kind) {
   scene.shapes = shapes;
   std::vector<ccd::Body> bodies = std::move(scene.bodies);
   scene.bodies.clear();
-  Placement placement(r_max, false);
+  Placement placement(r_max, p.integer("overlap") == 1);
   const double spheres = p.number("spheres");
   for (std::size_t i = 0; i < n; ++i) {
     ccd::Body b = bodies[i];

@@ -107,7 +107,8 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   bool sampling_missed = false;
   std::vector<std::string> names = ccdlab::all_method_names();
   // The earliest-contact scheduler looks the narrow phase up per pair of shapes, as the step pipeline does.
-  for (const char* scheduled : {"capsule/grid@earliest", "horn:4/sap@earliest", "swept_aabb/brute@earliest"})
+  for (const char* scheduled :
+       {"capsule/grid@earliest", "horn:4/sap@earliest", "swept_aabb/brute@earliest", "obb_sat:4/sap@earliest"})
     names.emplace_back(scheduled);
   for (const std::string& name : names) {
     INFO(c.name << " " << name);
