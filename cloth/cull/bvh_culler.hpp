@@ -3,8 +3,9 @@
 // (cloth/cull/triangle_bvh.hpp): the first call builds the topology from x0; later calls
 // refit it to the new interval; it is rebuilt from the interval's x0 when its quality
 // degrades. The rule: the tree's quality (summed surface areas of the internal nodes'
-// boxes over those of the leaves) is recorded right after each build; when a refit makes
-// it exceed `kRebuildFactor` times that value, the topology is rebuilt (and refitted).
+// boxes over the root's: the surface area heuristic's cost of a traversal) is recorded
+// right after each build; when a refit makes it exceed `kRebuildFactor` times that value,
+// the topology is rebuilt (and refitted).
 // A call with another mesh (different triangles or edges) or vertex count starts afresh.
 //
 // Refit or rebuild, `bvh` returns the same candidates (every non-adjacent pair whose

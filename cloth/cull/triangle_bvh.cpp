@@ -90,9 +90,12 @@ double TriangleBvh::quality() const {
     const Vec3 e = n.hi - n.lo;
     return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
   };
-  double internal = 0, leaves = 0;
-  for (const Node& n : nodes_) (n.triangle >= 0 ? leaves : internal) += area(n);
-  return leaves > 0 ? internal / leaves : 1.0;
+  if (root_ < 0) return 1.0;
+  double internal = 0;
+  for (const Node& n : nodes_)
+    if (n.triangle < 0) internal += area(n);
+  const double root = area(nodes_[static_cast<std::size_t>(root_)]);
+  return root > 0 ? internal / root : 1.0;
 }
 
 void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1) {

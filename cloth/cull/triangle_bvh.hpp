@@ -53,8 +53,9 @@ class TriangleBvh {
   /// primitives that both have an active vertex, and only the subtrees holding one.
   std::vector<Candidate> self_candidates(bool use_cones, BvhStats* stats = nullptr,
                                          std::span<const std::uint8_t> active = {}) const;
-  /// After a refit: the summed surface areas of the internal nodes' boxes over those of
-  /// the leaves (>= about 1; grows as refitted boxes loosen and overlap).
+  /// After a refit: the summed surface areas of the internal nodes' boxes over the root's
+  /// (the surface area heuristic's traversal cost: about the depth for a well-built tree,
+  /// up to the node count when every box spans the whole mesh).
   double quality() const;
   const ClothMesh& mesh() const { return *mesh_; }
   std::size_t vertex_count() const { return vertex_owner_.size(); }

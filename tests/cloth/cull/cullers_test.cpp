@@ -7,12 +7,14 @@
 // within it of itself): at separation > 0 it may drop pairs, which is allowed here.
 #include <cloth/cull/cullers.hpp>
 #include <cloth/cull/triangle_bvh.hpp>
+#include <cloth/cull/bvh_culler.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
 
 #include <algorithm>
+#include <random>
 #include <catch2/catch.hpp>
 
 using namespace ccd::cloth;
@@ -166,4 +168,40 @@ TEST_CASE("culler names: every broad phase behind boxes:, options, unknown names
   CHECK(find_culler("boxes:") == nullptr);
   CHECK(find_culler("nope") == nullptr);
   CHECK(find_culler("bvh_cones")->may_drop);
+}
+
+TEST_CASE("the bvh is rebuilt when refitting degrades it, and only then", "[cloth][cull]") {
+  // Built on a flat sheet, then refitted to the same sheet with its particles shuffled
+  // (every triangle a long sliver across the sheet): the refitted tree's quality degrades
+  // far beyond the rebuild factor, so that call rebuilds; the next call on the same state
+  // keeps the new tree. Candidates stay those of boxes:brute throughout.
+  ClothScene s = builtin_cloth_scene("drape", 8);
+  const ClothMesh mesh = make_grid_mesh(s);
+  const std::vector<Vec3> flat = initial_positions(s);
+  std::vector<Vec3> shuffled = flat;
+  std::mt19937_64 rng(16);
+  std::shuffle(shuffled.begin(), shuffled.end(), rng);
+  auto rebuilt = [](const Culler& c) {
+    for (const CullerCounter& counter : c.counters())
+      if (counter.name == "rebuilt") return counter.value;
+    return std::uint64_t{99};
+  };
+  for (const char* name : {"bvh", "bvh_cones"}) {
+    INFO(name);
+    const auto c = find_culler(name)->make();
+    c->cull(mesh, flat, flat, 0.01);
+    CHECK(rebuilt(*c) == 1);  // the first call builds
+    c->cull(mesh, flat, flat, 0.01);
+    CHECK(rebuilt(*c) == 0);
+    TriangleBvh refitted(mesh, flat);
+    refitted.refit(flat, flat, 0.005);
+    const double built = refitted.quality();
+    refitted.refit(shuffled, shuffled, 0.005);
+    CHECK(refitted.quality() > BvhCuller::kRebuildFactor * built);
+    const auto got = c->cull(mesh, shuffled, shuffled, 0.01);
+    CHECK(rebuilt(*c) == 1);
+    if (std::string(name) == "bvh") CHECK(got == find_culler("boxes:brute")->cull(mesh, shuffled, shuffled, 0.01));
+    c->cull(mesh, shuffled, shuffled, 0.01);
+    CHECK(rebuilt(*c) == 0);
+  }
 }
