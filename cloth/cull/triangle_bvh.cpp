@@ -13,10 +13,6 @@ namespace ccd::cloth {
 
 namespace {
 constexpr double kAnyDirection = 4.0;  // > pi
-
-double angle_between(const Vec3& a, const Vec3& b) {  // a, b unit
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
 }  // namespace
 
 TriangleBvh::TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x) : mesh_(&mesh) {
@@ -109,20 +105,28 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     const Vec3 a0 = x0[v[1]] - x0[v[0]], b0 = x0[v[2]] - x0[v[0]];
     const Vec3 a1 = x1[v[1]] - x1[v[0]], b1 = x1[v[2]] - x1[v[0]];
     const Vec3 c[3] = {a0.cross(b0), 0.5 * (a0.cross(b1) + a1.cross(b0)), a1.cross(b1)};
-    Vec3 sum = Vec3::Zero();
-    bool degenerate = false;
-    for (const Vec3& n3 : c) {
-      if (!(n3.norm() > 0)) degenerate = true;
-      else sum += n3.normalized();
+    Vec3 unit[3];
+    for (int k = 0; k < 3; ++k) {
+      const double len = c[k].norm();
+      if (!(len > 0) || !std::isfinite(len)) {
+        node.axis = Vec3::UnitZ();
+        node.half_angle = kAnyDirection;
+        return;
+      }
+      unit[k] = c[k] / len;
     }
-    if (degenerate || !(sum.norm() > 0)) {
+    const Vec3 sum = unit[0] + unit[1] + unit[2];
+    const double sum_len = sum.norm();
+    if (!(sum_len > 0)) {
       node.axis = Vec3::UnitZ();
       node.half_angle = kAnyDirection;
       return;
     }
-    node.axis = sum.normalized();
-    node.half_angle = 0;
-    for (const Vec3& n3 : c) node.half_angle = std::max(node.half_angle, angle_between(node.axis, n3.normalized()));
+    node.axis = sum / sum_len;
+    // One arc cosine per leaf (the cone's accuracy only steers culling: bvh_cones is not
+    // claimed conservative).
+    const double lowest = std::min({node.axis.dot(unit[0]), node.axis.dot(unit[1]), node.axis.dot(unit[2])});
+    node.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
   }
   refit_node(node.left, x0, x1);
@@ -138,7 +142,8 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     return;
   }
   node.axis = sum.normalized();
-  node.half_angle = std::max(angle_between(node.axis, l.axis) + l.half_angle, angle_between(node.axis, r.axis) + r.half_angle);
+  // The axis bisects the children's axes: it is as far from each.
+  node.half_angle = std::acos(std::clamp(node.axis.dot(l.axis), -1.0, 1.0)) + std::max(l.half_angle, r.half_angle);
 }
 
 std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats,
