@@ -4,6 +4,12 @@
 //   random: near-contact queries: random unit-cube primitives whose t = 1 positions are
 //           those at t = 0 plus a displacement uniform in [-0.6, 0.6]^3 (seed 16)
 // Counters: hits (queries reported as contact), boxes (parameter boxes per query).
+// The *_Quantiles benchmarks time every query of the set one by one, the whole set per
+// iteration, and report the median, p99.9 and largest time per query in microseconds
+// (median_us, p999_us, max_us). Argument 0: the steady clock around each call (cheap, but
+// on a shared machine the tail holds the time the thread was descheduled). Argument 1: the
+// thread's CPU clock (time spent elsewhere is not counted, but each reading is a system
+// call of about 0.3 us, which every figure includes).
 // Run: ./build/triangle_ccd_bench --benchmark_counters_tabular=true
 #include <cloth/ccd/hard_queries.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
@@ -11,6 +17,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <ctime>
 #include <random>
 #include <vector>
 
@@ -64,10 +72,33 @@ void run_exact(benchmark::State& state, PrimitivePair kind, const std::vector<Li
   }
 }
 
+void run_quantiles(benchmark::State& state, PrimitivePair kind, const std::vector<LinearQuery>& set) {
+  std::vector<double> us;
+  for (auto _ : state)
+    for (const LinearQuery& q : set) {
+      const clockid_t clock = state.range(0) == 0 ? CLOCK_MONOTONIC : CLOCK_THREAD_CPUTIME_ID;
+      timespec t0{}, t1{};
+      clock_gettime(clock, &t0);
+      const auto r = ccd::cloth::triangle_ccd(kind, q);
+      clock_gettime(clock, &t1);
+      benchmark::DoNotOptimize(r);
+      us.push_back(static_cast<double>(t1.tv_sec - t0.tv_sec) * 1e6 + static_cast<double>(t1.tv_nsec - t0.tv_nsec) * 1e-3);
+    }
+  std::sort(us.begin(), us.end());
+  auto quantile = [&](double p) { return us[std::min(us.size() - 1, static_cast<std::size_t>(p * static_cast<double>(us.size())))]; };
+  state.counters["median_us"] = quantile(0.5);
+  state.counters["p999_us"] = quantile(0.999);
+  state.counters["max_us"] = us.back();
+}
+
 void BM_Kernel_VF_Hard(benchmark::State& s) { static const auto q = hard(PrimitivePair::VertexFace); run_kernel(s, PrimitivePair::VertexFace, q); }
 void BM_Kernel_EE_Hard(benchmark::State& s) { static const auto q = hard(PrimitivePair::EdgeEdge); run_kernel(s, PrimitivePair::EdgeEdge, q); }
 void BM_Kernel_VF_Random(benchmark::State& s) { static const auto q = random_set(4096); run_kernel(s, PrimitivePair::VertexFace, q); }
 void BM_Kernel_EE_Random(benchmark::State& s) { static const auto q = random_set(4096); run_kernel(s, PrimitivePair::EdgeEdge, q); }
+void BM_Kernel_VF_Random_Quantiles(benchmark::State& s) { static const auto q = random_set(4096); run_quantiles(s, PrimitivePair::VertexFace, q); }
+void BM_Kernel_EE_Random_Quantiles(benchmark::State& s) { static const auto q = random_set(4096); run_quantiles(s, PrimitivePair::EdgeEdge, q); }
+void BM_Kernel_VF_Hard_Quantiles(benchmark::State& s) { static const auto q = hard(PrimitivePair::VertexFace); run_quantiles(s, PrimitivePair::VertexFace, q); }
+void BM_Kernel_EE_Hard_Quantiles(benchmark::State& s) { static const auto q = hard(PrimitivePair::EdgeEdge); run_quantiles(s, PrimitivePair::EdgeEdge, q); }
 void BM_Exact_VF_Hard(benchmark::State& s) { static const auto q = hard(PrimitivePair::VertexFace); run_exact(s, PrimitivePair::VertexFace, q); }
 void BM_Exact_EE_Hard(benchmark::State& s) { static const auto q = hard(PrimitivePair::EdgeEdge); run_exact(s, PrimitivePair::EdgeEdge, q); }
 
@@ -75,6 +106,10 @@ BENCHMARK(BM_Kernel_VF_Hard);
 BENCHMARK(BM_Kernel_EE_Hard);
 BENCHMARK(BM_Kernel_VF_Random);
 BENCHMARK(BM_Kernel_EE_Random);
+BENCHMARK(BM_Kernel_VF_Random_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel_EE_Random_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel_VF_Hard_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Kernel_EE_Hard_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Exact_VF_Hard)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Exact_EE_Hard)->Unit(benchmark::kMicrosecond);
 

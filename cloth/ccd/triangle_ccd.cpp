@@ -112,6 +112,33 @@ void evaluate(const LinearQuery& q, const Box& box, Samples& out) {
   }
 }
 
+// True when n.F > |n| separation at every corner of the box (or n.F < -|n| separation at
+// every corner), proved: then |F| > separation on the whole box. Bounds, with n scaled to
+// components in [-1, 1]: each corner value has error <= err per component, so the exact n.F
+// differs from n.f by at most |n|_1 err; the rounded dot product g = fl(n.f) differs from
+// n.f by at most 3u/(1 - 3u) s < 2 eps s, s = sum |n_k f_k| (u = eps / 2; 4 eps s is
+// used, which also covers the rounding of s). The computed
+// |n|_2 is rounded up by a relative 2^-48 (it is within 4 eps of the exact norm), and the
+// bound as a whole by 2^-40 (a dozen roundings), plus the underflow slack.
+bool excluded_along(const double (&dir)[3], const Samples& c, double separation, double err) {
+  const double scale = std::max({std::abs(dir[0]), std::abs(dir[1]), std::abs(dir[2])});
+  if (!(scale > 0) || !std::isfinite(scale)) return false;
+  const double n[3] = {dir[0] / scale, dir[1] / scale, dir[2] / scale};
+  const double n1 = std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]);
+  const double n2 = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * (1 + 0x1p-48);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo, s = 0.0;
+  for (int it = 0; it < 2; ++it)
+    for (int i = 0; i < c.n; ++i) {
+      const double* f = c.f[it][i];
+      const double g = (n[0] * f[0] + n[1] * f[1]) + n[2] * f[2];
+      lo = std::min(lo, g);
+      hi = std::max(hi, g);
+      s = std::max(s, std::abs(n[0] * f[0]) + std::abs(n[1] * f[1]) + std::abs(n[2] * f[2]));
+    }
+  const double bound = (n2 * separation + n1 * err + 4.0 * kEps * s) * (1 + 0x1p-40) + kUnderflowSlack;
+  return lo > bound || hi < -bound;
+}
+
 template <PrimitivePair Kind>
 TriangleCcdResult run(const LinearQuery& q, const TriangleCcdOptions& opt) {
   TriangleCcdResult result;
@@ -173,6 +200,19 @@ TriangleCcdResult run(const LinearQuery& q, const TriangleCcdOptions& opt) {
       width = std::max(width, hi - lo);
     }
     if (excluded) continue;
+    // Two more directions n: the mean corner value (F's direction over the box) and
+    // da x db (the face normal, or the edges' common normal). n.F is multilinear too, so
+    // it is > |n| separation on the whole box when it is on every corner.
+    double mean[3] = {0.0, 0.0, 0.0}, normal[3];
+    for (int it = 0; it < 2; ++it)
+      for (int i = 0; i < c.n; ++i)
+        for (int k = 0; k < 3; ++k) mean[k] += c.f[it][i][k];
+    for (int k = 0; k < 3; ++k) {
+      const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+      normal[k] = (c.da[0][k1] * c.db[0][k2] - c.da[0][k2] * c.db[0][k1]) +
+                  (c.da[1][k1] * c.db[1][k2] - c.da[1][k2] * c.db[1][k1]);
+    }
+    if (excluded_along(mean, c, opt.separation, err) || excluded_along(normal, c, opt.separation, err)) continue;
     // The split direction: the parameter along which F changes most over the box (an
     // estimate; it only steers the search).
     double change[3] = {0.0, 0.0, 0.0};

@@ -13,7 +13,9 @@
 // between its smallest and largest corner value. Corner values are computed in doubles
 // with a proved error bound of 16 eps M (M the largest input magnitude, eps = 2^-52; the
 // derivation is in triangle_ccd.cpp). A box is proved contact-free when some component is
-// above separation + error on every corner, or below its negative. Boxes are split in
+// above separation + error on every corner, or below its negative, or when n.F is, for n
+// the mean corner value or da x db (the face normal, or the edges' common normal), above
+// |n| separation plus its error bound on every corner, or below its negative. Boxes are split in
 // halves (parameters stay dyadic, so the corner parameters are exact), earliest time first.
 //
 // Hit is reported when a box's image is narrower than `tolerance` times the query's extent

@@ -1,37 +1,75 @@
 #include "cullers.hpp"
 
-#include <cloth/cull/triangle_bvh.hpp>
+#include <cloth/cull/box_culler.hpp>
+#include <cloth/cull/bvh_culler.hpp>
+#include <cloth/cull/sensor_culler.hpp>
+
+#include <deque>
+#include <mutex>
+#include <stdexcept>
 
 namespace ccd::cloth {
 
 namespace {
 
-std::vector<Candidate> brute(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3>, double) {
-  return brute_force_candidates(mesh, x0.size());
+class BruteCuller final : public Culler {
+ public:
+  std::vector<Candidate> cull(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3>, double) override {
+    return brute_force_candidates(mesh, x0.size());
+  }
+};
+
+constexpr std::string_view kBoxesPrefix = "boxes:";
+
+CullerEntry boxes_entry(std::string name, const BroadPhaseSpec& spec) {
+  const std::string description =
+      "primitive swept boxes through the broad phase '" + std::string(spec.info->name) + "'";
+  return {std::move(name), false, description,
+          [spec] { return std::unique_ptr<Culler>(std::make_unique<BoxCuller>(spec)); }};
 }
 
-template <bool Cones>
-std::vector<Candidate> bvh(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1, double separation) {
-  TriangleBvh tree(mesh, x0);
-  tree.refit(x0, x1, separation / 2);
-  return tree.self_candidates(Cones);
+std::vector<CullerEntry> make_table() {
+  std::vector<CullerEntry> t;
+  t.push_back({"brute", false, "every non-adjacent pair: the reference", [] {
+                 return std::unique_ptr<Culler>(std::make_unique<BruteCuller>());
+               }});
+  t.push_back({"bvh", false, "swept-box BVH over the triangles, refitted between calls", [] {
+                 return std::unique_ptr<Culler>(std::make_unique<BvhCuller>(false));
+               }});
+  t.push_back({"bvh_cones", true, "bvh with normal-cone culling of self-tests", [] {
+                 return std::unique_ptr<Culler>(std::make_unique<BvhCuller>(true));
+               }});
+  t.push_back({"sensors", true, "particle sensors flag folds; the bvh tests only what they flag", [] {
+                 return std::unique_ptr<Culler>(std::make_unique<SensorCuller>());
+               }});
+  for (const BroadPhaseInfo& info : broad_phase_registry())
+    t.push_back(boxes_entry(std::string(kBoxesPrefix) + std::string(info.name), parse_broad_phase(info.name)));
+  return t;
 }
 
 }  // namespace
 
 std::span<const CullerEntry> cullers() {
-  static const CullerEntry table[] = {
-      {"brute", false, brute},
-      {"bvh", false, bvh<false>},
-      {"bvh_cones", true, bvh<true>},
-  };
+  static const std::vector<CullerEntry> table = make_table();
   return table;
 }
 
 const CullerEntry* find_culler(std::string_view name) {
   for (const CullerEntry& c : cullers())
     if (c.name == name) return &c;
-  return nullptr;
+  if (!name.starts_with(kBoxesPrefix)) return nullptr;
+  // A `boxes:` spec with options: resolved once, kept for the program's lifetime.
+  static std::mutex mutex;
+  static std::deque<CullerEntry> specs;
+  const std::lock_guard lock(mutex);
+  for (const CullerEntry& c : specs)
+    if (c.name == name) return &c;
+  try {
+    const BroadPhaseSpec spec = parse_broad_phase(name.substr(kBoxesPrefix.size()));
+    return &specs.emplace_back(boxes_entry(std::string(name), spec));
+  } catch (const std::invalid_argument&) {
+    return nullptr;
+  }
 }
 
 }  // namespace ccd::cloth

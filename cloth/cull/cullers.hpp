@@ -1,29 +1,42 @@
 #pragma once
-// The one registry of cloth self-collision cullers. A culler turns one check interval of
-// a mesh's motion (x0 -> x1, linear per vertex; x1 = x0 is the discrete mode, a proximity
-// check at one state) into typed candidates for the narrow phase (triangle CCD with the
-// separation). `brute` is the reference: every non-adjacent pair.
+// The one registry of cloth self-collision cullers (the interface: cloth/cull/culler.hpp).
 //
-//   brute      every pair (never drops one)
-//   bvh        swept-box BVH over the triangles, built and refitted per call
-//   bvh_cones  bvh with normal-cone culling of self-tests (may drop pairs: see triangle_bvh.hpp)
-#include <cloth/cull/candidate.hpp>
+//   brute               every non-adjacent pair (the reference; never drops one)
+//   bvh                 swept-box BVH over the triangles, refitted between calls (conservative)
+//   bvh_cones           bvh with normal-cone culling of self-tests (may drop pairs: triangle_bvh.hpp)
+//   sensors             particle sensors flag folds, the bvh tests what they flag (may drop pairs:
+//                       sensor_culler.hpp)
+//   boxes:<broad phase> primitive boxes through a broad phase of ccd/broad_phase/registry.hpp,
+//                       e.g. "boxes:sap", "boxes:grid:cell=0.1" (conservative)
+//
+// `cullers()` lists each method once, with `boxes:` over every broad phase at its default
+// options; `find_culler` also accepts a `boxes:` spec with options.
+#include <cloth/cull/culler.hpp>
 
+#include <functional>
+#include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
 namespace ccd::cloth {
 
 struct CullerEntry {
-  std::string_view name;
+  std::string name;
   bool may_drop;  ///< true when the method is not proved conservative
-  std::vector<Candidate> (*cull)(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1,
-                                 double separation);
+  std::string description;  ///< one line
+  std::function<std::unique_ptr<Culler>()> make;  ///< a new instance (state kept between its calls)
+
+  /// One check interval with a fresh instance (nothing kept between calls).
+  std::vector<Candidate> cull(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1,
+                              double separation) const {
+    return make()->cull(mesh, x0, x1, separation);
+  }
 };
 
 std::span<const CullerEntry> cullers();
-/// nullptr when unknown.
+/// nullptr when unknown (or a `boxes:` spec the broad-phase registry refuses).
 const CullerEntry* find_culler(std::string_view name);
 
 }  // namespace ccd::cloth

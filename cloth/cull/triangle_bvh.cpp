@@ -1,5 +1,7 @@
 #include "triangle_bvh.hpp"
 
+#include <cloth/cull/primitive_boxes.hpp>
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -11,23 +13,33 @@ namespace ccd::cloth {
 
 namespace {
 constexpr double kAnyDirection = 4.0;  // > pi
-
-double angle_between(const Vec3& a, const Vec3& b) {  // a, b unit
-  return std::atan2(a.cross(b).norm(), a.dot(b));
-}
 }  // namespace
 
 TriangleBvh::TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x) : mesh_(&mesh) {
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
   triangle_edges_.resize(mesh.triangles.size());
+  vertex_owner_.assign(x.size(), none);
+  edge_owner_.assign(mesh.edges.size(), none);
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       std::uint32_t a = mesh.triangles[t][static_cast<std::size_t>(k)], b = mesh.triangles[t][static_cast<std::size_t>((k + 1) % 3)];
+      if (vertex_owner_[a] == none) vertex_owner_[a] = static_cast<std::uint32_t>(t);
       if (a > b) std::swap(a, b);
       const std::array<std::uint32_t, 2> e{a, b};
       const auto it = std::lower_bound(mesh.edges.begin(), mesh.edges.end(), e);
-      triangle_edges_[t][static_cast<std::size_t>(k)] = static_cast<std::uint32_t>(it - mesh.edges.begin());
+      const auto edge = static_cast<std::uint32_t>(it - mesh.edges.begin());
+      triangle_edges_[t][static_cast<std::size_t>(k)] = edge;
+      if (edge_owner_[edge] == none) edge_owner_[edge] = static_cast<std::uint32_t>(t);
     }
-  std::vector<std::uint32_t> tris(mesh.triangles.size());
+  for (std::uint32_t v = 0; v < vertex_owner_.size(); ++v)
+    if (vertex_owner_[v] == none) orphans_.push_back(v);
+  rebuild(x);
+}
+
+void TriangleBvh::rebuild(std::span<const Vec3> x) {
+  nodes_.clear();
+  root_ = -1;
+  std::vector<std::uint32_t> tris(mesh_->triangles.size());
   for (std::uint32_t t = 0; t < tris.size(); ++t) tris[t] = t;
   nodes_.reserve(2 * tris.size());
   if (!tris.empty()) root_ = build(tris, 0, tris.size(), x);
@@ -65,46 +77,60 @@ int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std:
 }
 
 void TriangleBvh::refit(std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate) {
-  if (root_ >= 0) refit_node(root_, x0, x1, inflate);
+  vertex_boxes(x0, x1, inflate, vertex_boxes_);
+  if (root_ >= 0) refit_node(root_, x0, x1);
 }
 
-void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate) {
+double TriangleBvh::quality() const {
+  auto area = [](const Node& n) {
+    const Vec3 e = n.hi - n.lo;
+    return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
+  };
+  if (root_ < 0) return 1.0;
+  double internal = 0;
+  for (const Node& n : nodes_)
+    if (n.triangle < 0) internal += area(n);
+  const double root = area(nodes_[static_cast<std::size_t>(root_)]);
+  return root > 0 ? internal / root : 1.0;
+}
+
+void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1) {
   Node& node = nodes_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) {
     const auto& v = mesh_->triangles[static_cast<std::size_t>(node.triangle)];
-    node.lo = node.hi = x0[v[0]];
-    for (std::uint32_t p : v) {
-      node.lo = node.lo.cwiseMin(x0[p]).cwiseMin(x1[p]);
-      node.hi = node.hi.cwiseMax(x0[p]).cwiseMax(x1[p]);
-    }
-    // Rounded outwards, so that the inflated box holds every point within `inflate`.
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) {
-      node.lo[k] = inflate > 0 ? std::nextafter(node.lo[k] - inflate, -inf) : node.lo[k];
-      node.hi[k] = inflate > 0 ? std::nextafter(node.hi[k] + inflate, inf) : node.hi[k];
-    }
+    const Aabb box = triangle_box(vertex_boxes_, v);
+    node.lo = box.lo;
+    node.hi = box.hi;
     // Bernstein coefficients of the normal over the interval.
     const Vec3 a0 = x0[v[1]] - x0[v[0]], b0 = x0[v[2]] - x0[v[0]];
     const Vec3 a1 = x1[v[1]] - x1[v[0]], b1 = x1[v[2]] - x1[v[0]];
     const Vec3 c[3] = {a0.cross(b0), 0.5 * (a0.cross(b1) + a1.cross(b0)), a1.cross(b1)};
-    Vec3 sum = Vec3::Zero();
-    bool degenerate = false;
-    for (const Vec3& n3 : c) {
-      if (!(n3.norm() > 0)) degenerate = true;
-      else sum += n3.normalized();
+    Vec3 unit[3];
+    for (int k = 0; k < 3; ++k) {
+      const double len = c[k].norm();
+      if (!(len > 0) || !std::isfinite(len)) {
+        node.axis = Vec3::UnitZ();
+        node.half_angle = kAnyDirection;
+        return;
+      }
+      unit[k] = c[k] / len;
     }
-    if (degenerate || !(sum.norm() > 0)) {
+    const Vec3 sum = unit[0] + unit[1] + unit[2];
+    const double sum_len = sum.norm();
+    if (!(sum_len > 0)) {
       node.axis = Vec3::UnitZ();
       node.half_angle = kAnyDirection;
       return;
     }
-    node.axis = sum.normalized();
-    node.half_angle = 0;
-    for (const Vec3& n3 : c) node.half_angle = std::max(node.half_angle, angle_between(node.axis, n3.normalized()));
+    node.axis = sum / sum_len;
+    // One arc cosine per leaf (the cone's accuracy only steers culling: bvh_cones is not
+    // claimed conservative).
+    const double lowest = std::min({node.axis.dot(unit[0]), node.axis.dot(unit[1]), node.axis.dot(unit[2])});
+    node.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
   }
-  refit_node(node.left, x0, x1, inflate);
-  refit_node(node.right, x0, x1, inflate);
+  refit_node(node.left, x0, x1);
+  refit_node(node.right, x0, x1);
   const Node& l = nodes_[static_cast<std::size_t>(node.left)];
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
@@ -116,62 +142,118 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     return;
   }
   node.axis = sum.normalized();
-  node.half_angle = std::max(angle_between(node.axis, l.axis) + l.half_angle, angle_between(node.axis, r.axis) + r.half_angle);
+  // The axis bisects the children's axes: it is as far from each.
+  node.half_angle = std::acos(std::clamp(node.axis.dot(l.axis), -1.0, 1.0)) + std::max(l.half_angle, r.half_angle);
 }
 
-std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats) const {
+std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats,
+                                                    std::span<const std::uint8_t> active) const {
   std::vector<Candidate> out;
   BvhStats s;
-  if (root_ >= 0) self(root_, use_cones, out, s);
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+  Traversal tr{use_cones, active, {}, out, s};
+  if (root_ >= 0) {
+    if (!active.empty()) {
+      tr.node_active.resize(nodes_.size());
+      mark_active(root_, tr);
+    }
+    self(root_, tr);
+    for (std::uint32_t v : orphans_)
+      if (active.empty() || active[v]) orphan(v, root_, tr);
+  }
+  std::sort(out.begin(), out.end());  // unique already: each pair is emitted once
   if (stats) *stats = s;
   return out;
 }
 
-void TriangleBvh::self(int n, bool cones, std::vector<Candidate>& out, BvhStats& s) const {
+std::uint8_t TriangleBvh::mark_active(int n, Traversal& tr) const {
   const Node& node = nodes_[static_cast<std::size_t>(n)];
-  if (node.triangle >= 0) return;  // a triangle's own primitives are all adjacent
-  if (cones && node.half_angle < std::numbers::pi / 2) {
-    ++s.cone_culled;
-    return;
+  std::uint8_t a = 0;
+  if (node.triangle >= 0) {
+    for (std::uint32_t v : mesh_->triangles[static_cast<std::size_t>(node.triangle)]) a |= tr.active[v] ? 1 : 0;
+  } else {
+    a = static_cast<std::uint8_t>(mark_active(node.left, tr) | mark_active(node.right, tr));
   }
-  self(node.left, cones, out, s);
-  self(node.right, cones, out, s);
-  pair(node.left, node.right, out, s);
+  return tr.node_active[static_cast<std::size_t>(n)] = a;
 }
 
-void TriangleBvh::pair(int a, int b, std::vector<Candidate>& out, BvhStats& s) const {
+void TriangleBvh::self(int n, Traversal& tr) const {
+  const Node& node = nodes_[static_cast<std::size_t>(n)];
+  if (node.triangle >= 0) return;  // a triangle's own primitives are all adjacent
+  if (!tr.node_active.empty() && !tr.node_active[static_cast<std::size_t>(n)]) return;
+  if (tr.cones && node.half_angle < std::numbers::pi / 2) {
+    ++tr.stats.cone_culled;
+    return;
+  }
+  self(node.left, tr);
+  self(node.right, tr);
+  pair(node.left, node.right, tr);
+}
+
+void TriangleBvh::pair(int a, int b, Traversal& tr) const {
   const Node& na = nodes_[static_cast<std::size_t>(a)];
   const Node& nb = nodes_[static_cast<std::size_t>(b)];
-  ++s.node_pairs;
+  if (!tr.node_active.empty() &&
+      !(tr.node_active[static_cast<std::size_t>(a)] && tr.node_active[static_cast<std::size_t>(b)]))
+    return;
+  ++tr.stats.node_pairs;
   if ((na.lo.array() > nb.hi.array()).any() || (nb.lo.array() > na.hi.array()).any()) return;
   if (na.triangle >= 0 && nb.triangle >= 0) {
-    ++s.leaf_pairs;
-    emit(static_cast<std::uint32_t>(na.triangle), static_cast<std::uint32_t>(nb.triangle), out);
+    ++tr.stats.leaf_pairs;
+    emit(static_cast<std::uint32_t>(na.triangle), static_cast<std::uint32_t>(nb.triangle), tr);
     return;
   }
   if (nb.triangle >= 0 || (na.triangle < 0 && (na.hi - na.lo).norm() >= (nb.hi - nb.lo).norm())) {
-    pair(na.left, b, out, s);
-    pair(na.right, b, out, s);
+    pair(na.left, b, tr);
+    pair(na.right, b, tr);
   } else {
-    pair(a, nb.left, out, s);
-    pair(a, nb.right, out, s);
+    pair(a, nb.left, tr);
+    pair(a, nb.right, tr);
   }
 }
 
-void TriangleBvh::emit(std::uint32_t ta, std::uint32_t tb, std::vector<Candidate>& out) const {
+void TriangleBvh::orphan(std::uint32_t v, int n, Traversal& tr) const {
+  const Node& node = nodes_[static_cast<std::size_t>(n)];
+  if (!tr.node_active.empty() && !tr.node_active[static_cast<std::size_t>(n)]) return;
+  ++tr.stats.node_pairs;
+  const Aabb& vb = vertex_boxes_[v];
+  if ((vb.lo.array() > node.hi.array()).any() || (node.lo.array() > vb.hi.array()).any()) return;
+  if (node.triangle >= 0) {
+    const Candidate c{PrimitivePair::VertexFace, v, static_cast<std::uint32_t>(node.triangle)};
+    if (!adjacent(*mesh_, c)) tr.out.push_back(c);
+    return;
+  }
+  orphan(v, node.left, tr);
+  orphan(v, node.right, tr);
+}
+
+void TriangleBvh::emit(std::uint32_t ta, std::uint32_t tb, Traversal& tr) const {
   const ClothMesh& m = *mesh_;
-  auto push = [&](Candidate c) {
-    if (!adjacent(m, c)) out.push_back(c);
-  };
-  for (std::uint32_t v : m.triangles[ta]) push({PrimitivePair::VertexFace, v, tb});
-  for (std::uint32_t v : m.triangles[tb]) push({PrimitivePair::VertexFace, v, ta});
-  for (std::uint32_t ea : triangle_edges_[ta])
-    for (std::uint32_t eb : triangle_edges_[tb]) {
-      if (ea == eb) continue;
-      push({PrimitivePair::EdgeEdge, std::min(ea, eb), std::max(ea, eb)});
+  const std::span<const Aabb> vb(vertex_boxes_);
+  const bool all = tr.active.empty();
+  auto active = [&](std::uint32_t v) { return all || tr.active[v] != 0; };
+  auto vertex_face = [&](std::uint32_t from, std::uint32_t to) {
+    const auto& face_vertices = m.triangles[to];
+    if (!all && !active(face_vertices[0]) && !active(face_vertices[1]) && !active(face_vertices[2])) return;
+    const Aabb face = triangle_box(vb, face_vertices);
+    for (std::uint32_t v : m.triangles[from]) {
+      if (vertex_owner_[v] != from || !active(v) || !vb[v].overlaps(face)) continue;
+      const Candidate c{PrimitivePair::VertexFace, v, to};
+      if (!adjacent(m, c)) tr.out.push_back(c);
     }
+  };
+  vertex_face(ta, tb);
+  vertex_face(tb, ta);
+  for (std::uint32_t ea : triangle_edges_[ta]) {
+    if (edge_owner_[ea] != ta || !(active(m.edges[ea][0]) || active(m.edges[ea][1]))) continue;
+    const Aabb box_a = edge_box(vb, m.edges[ea]);
+    for (std::uint32_t eb : triangle_edges_[tb]) {
+      if (edge_owner_[eb] != tb || !(active(m.edges[eb][0]) || active(m.edges[eb][1])) ||
+          !box_a.overlaps(edge_box(vb, m.edges[eb])))
+        continue;
+      const Candidate c{PrimitivePair::EdgeEdge, std::min(ea, eb), std::max(ea, eb)};
+      if (!adjacent(m, c)) tr.out.push_back(c);
+    }
+  }
 }
 
 }  // namespace ccd::cloth

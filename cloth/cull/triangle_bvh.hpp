@@ -2,12 +2,20 @@
 // A bounding volume hierarchy over a mesh's triangles for self-collision culling, with
 // normal cones (Volino and Magnenat-Thalmann's "positive vector").
 //
-// The tree's topology is built once from one state (median splits of triangle centroids
-// along the longest axis). Each check interval refits it: a leaf's box holds its triangle
-// at both ends of the interval (so, with linear motion, all of it in between: the swept
-// box), inflated by half the separation. Then a box overlap is necessary for two
-// primitives to come within the separation. Passing x1 = x0 gives the discrete mode (the
-// boxes of one state).
+// The tree's topology is built from one state (median splits of triangle centroids along
+// the longest axis). Each check interval refits it: a leaf's box holds its triangle at both
+// ends of the interval (so, with linear motion, all of it in between: the swept box),
+// inflated by half the separation. Then a box overlap is necessary for two primitives to
+// come within the separation. Passing x1 = x0 gives the discrete mode (the boxes of one
+// state). A refitted tree stays correct however the mesh moves, only slower to traverse:
+// `quality()` measures that, and a caller rebuilds when it degrades (cloth/cull/bvh_culler.hpp).
+//
+// Candidates: each vertex and each edge is owned by one triangle containing it. An
+// overlapping pair of leaves (ta, tb) emits the vertex-face pairs of ta's vertices with tb
+// (and the reverse) and the edge-edge pairs of their edges, each only when the two
+// primitives' own boxes overlap too. A primitive's box lies in its owner's, so every
+// non-adjacent pair with overlapping primitive boxes is emitted, exactly once, whatever the
+// topology: `bvh` returns exactly the pairs whose primitive boxes overlap.
 //
 // Normal cones: under linear motion a triangle's normal n(t) = e1(t) x e2(t) is a
 // quadratic with Bernstein coefficients n(0), (e1(0) x e2(1) + e1(1) x e2(0)) / 2 and
@@ -19,6 +27,7 @@
 // itself. That contour test is not done here, so `bvh_cones` may drop true contacts.
 // Its tests check, on the cloth scenes, that every dropped pair is contact-free.
 #include <cloth/cull/candidate.hpp>
+#include <ccd/geometry/aabb.hpp>
 
 #include <span>
 #include <vector>
@@ -33,11 +42,23 @@ struct BvhStats {
 
 class TriangleBvh {
  public:
+  /// The topology from the state x (one position per mesh vertex).
   TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x);
+  /// A new topology from the state x, for the same mesh.
+  void rebuild(std::span<const Vec3> x);
   /// Boxes and cones for the motion from x0 to x1, boxes inflated by `inflate` (>= 0).
   void refit(std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate);
-  /// Sorted, unique, non-adjacent candidates whose primitives' boxes overlap.
-  std::vector<Candidate> self_candidates(bool use_cones, BvhStats* stats = nullptr) const;
+  /// Sorted, unique, non-adjacent candidates whose primitives' boxes overlap. With
+  /// `active` (one flag per vertex, non-zero = active; empty = all active), only pairs of
+  /// primitives that both have an active vertex, and only the subtrees holding one.
+  std::vector<Candidate> self_candidates(bool use_cones, BvhStats* stats = nullptr,
+                                         std::span<const std::uint8_t> active = {}) const;
+  /// After a refit: the summed surface areas of the internal nodes' boxes over the root's
+  /// (the surface area heuristic's traversal cost: about the depth for a well-built tree,
+  /// up to the node count when every box spans the whole mesh).
+  double quality() const;
+  const ClothMesh& mesh() const { return *mesh_; }
+  std::size_t vertex_count() const { return vertex_owner_.size(); }
 
  private:
   struct Node {
@@ -48,13 +69,25 @@ class TriangleBvh {
     int triangle = -1;      // leaf
   };
   int build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x);
-  void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate);
-  void self(int n, bool cones, std::vector<Candidate>& out, BvhStats& s) const;
-  void pair(int a, int b, std::vector<Candidate>& out, BvhStats& s) const;
-  void emit(std::uint32_t ta, std::uint32_t tb, std::vector<Candidate>& out) const;
+  void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1);
+  struct Traversal {
+    bool cones;
+    std::span<const std::uint8_t> active;  // per vertex (empty: all)
+    std::vector<std::uint8_t> node_active;  // per node (empty: all)
+    std::vector<Candidate>& out;
+    BvhStats& stats;
+  };
+  void self(int n, Traversal& tr) const;
+  void pair(int a, int b, Traversal& tr) const;
+  void orphan(std::uint32_t v, int n, Traversal& tr) const;
+  void emit(std::uint32_t ta, std::uint32_t tb, Traversal& tr) const;
+  std::uint8_t mark_active(int n, Traversal& tr) const;
 
   const ClothMesh* mesh_;
   std::vector<std::array<std::uint32_t, 3>> triangle_edges_;
+  std::vector<std::uint32_t> vertex_owner_, edge_owner_;  // the triangle owning each
+  std::vector<std::uint32_t> orphans_;                    // vertices on no triangle
+  std::vector<Aabb> vertex_boxes_;                        // after refit: inflated swept boxes
   std::vector<Node> nodes_;
   int root_ = -1;
 };

@@ -119,6 +119,33 @@ TEST_CASE("triangle CCD with a minimum separation is conservative", "[cloth][ccd
   }
 }
 
+TEST_CASE("triangle CCD excludes pairs farther than the separation though every coordinate is within it",
+          "[cloth][ccd]") {
+  // Separation 1/8; offsets (0, 3/32, 3/32): distance 3 sqrt(2) / 32 ~ 0.133 > 1/8, while
+  // each coordinate differs by 3/32 < 1/8, so no single coordinate proves the miss (a test
+  // on the coordinates alone reports a contact). Offsets (0, 1/16, 1/16): distance ~0.088,
+  // a contact. The exact reference decides both; the kernel must agree.
+  TriangleCcdOptions opt;
+  opt.separation = 0.125;
+  const mpq_class d(1, 64);  // the reference takes the squared separation
+  for (const double o : {3.0 / 32, 1.0 / 16}) {
+    INFO("offset " << o);
+    const bool contact = o == 1.0 / 16;
+    SECTION("parallel edges, still") {
+      const LinearQuery q{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.25, o, o), Vec3(0.75, o, o), Vec3(0, 0, 0),
+                           Vec3(1, 0, 0), Vec3(0.25, o, o), Vec3(0.75, o, o)}};
+      CHECK(exact_contact(PrimitivePair::EdgeEdge, to_rational(q), d) == contact);
+      CHECK((triangle_ccd(PrimitivePair::EdgeEdge, q, opt).status == QueryStatus::Hit) == contact);
+    }
+    SECTION("a vertex moving along a face's edge, beside and above it") {
+      const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0);
+      const LinearQuery q{{Vec3(-o, 0.25, o), f0, f1, f2, Vec3(-o, 0.75, o), f0, f1, f2}};
+      CHECK(exact_contact(PrimitivePair::VertexFace, to_rational(q), d) == contact);
+      CHECK((triangle_ccd(PrimitivePair::VertexFace, q, opt).status == QueryStatus::Hit) == contact);
+    }
+  }
+}
+
 TEST_CASE("triangle CCD reports bad input and a spent budget as possible contacts", "[cloth][ccd]") {
   LinearQuery q = hard_queries(PrimitivePair::EdgeEdge).front().query;
   SECTION("a spent budget is a conservative hit") {
