@@ -14,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ccdlab=${CCDLAB:-$root/build/ccdlab}
 python=/usr/bin/python3
-studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling cloth"
+studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling"
 
 usage() {
   echo "usage: scripts/study.sh NAME [--threads N] [--plot-only] [--publish]   (NAME: ${studies// /, })" >&2
@@ -67,8 +67,7 @@ end=$(date +%s.%N)
 
 for r in "${results[@]}"; do
   echo "$r"
-  # plot.py draws sphere and rigid results; the cloth study's charts are plot_study.py's.
-  [[ $name == cloth ]] || "$python" "$root/scripts/plot.py" "$r" --format png -o "${r%.json}-plots"
+  "$python" "$root/scripts/plot.py" "$r" --format png -o "${r%.json}-plots"
 done
 "$python" "$root/scripts/plot_study.py" "$name" "${results[@]}" -o "$out/plots" --ccdlab "$ccdlab" \
   | tee "$out/summary.md"
