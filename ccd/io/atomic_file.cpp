@@ -20,9 +20,12 @@ namespace {
 namespace fs = std::filesystem;
 
 // Temporary files being written, in slots a signal handler may read: a slot's path is
-// written while its state is Claimed and read only while it is Active (lock-free atomics
-// and unlink are async-signal-safe; a std::set under a mutex is not).
-enum SlotState : int { Free = 0, Claimed = 1, Active = 2 };
+// written while its state is Claimed and read only once it is Named (lock-free atomics
+// and unlink are async-signal-safe; a std::set under a mutex is not). A slot is Named
+// before the file is created, so a signal that arrives just after the creation still
+// finds its name; unlinking a name whose file does not exist yet is harmless, and a file
+// that already has the name (O_EXCL refused it) is a leftover of a process with our pid.
+enum SlotState : int { Free = 0, Claimed = 1, Named = 2 };
 struct Slot {
   std::atomic<int> state{Free};
   char path[4096];
@@ -36,13 +39,12 @@ int claim_slot(const std::string& path) {
     int expected = Free;
     if (g_slots[i].state.compare_exchange_strong(expected, Claimed)) {
       std::memcpy(g_slots[i].path, path.c_str(), path.size() + 1);
-      return static_cast<int>(i);  // Active once the file exists (activate_slot)
+      g_slots[i].state.store(Named);
+      return static_cast<int>(i);
     }
   }
   throw std::runtime_error(path + ": more than " + std::to_string(g_slots.size()) + " output files open at once");
 }
-
-void activate_slot(int slot) { g_slots[static_cast<std::size_t>(slot)].state.store(Active); }
 
 void release_slot(int slot) {
   if (slot >= 0) g_slots[static_cast<std::size_t>(slot)].state.store(Free);
@@ -112,7 +114,6 @@ OutputFile::OutputFile(std::string path, std::span<const std::string> inputs, bo
     slot_ = claim_slot(name);
     fd_ = ::open(name.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0666);
     if (fd_ >= 0) {
-      activate_slot(slot_);
       temporary_ = name;
       return;
     }
@@ -206,7 +207,7 @@ void install_temporary_file_cleanup() {
 
 void remove_pending_temporary_files() noexcept {
   for (Slot& s : g_slots)
-    if (s.state.load() == Active) ::unlink(s.path);
+    if (s.state.load() == Named) ::unlink(s.path);
 }
 
 }  // namespace ccd
