@@ -93,6 +93,7 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   options.stale = method.scheduler.options.number("stale");
   options.align = method.scheduler.options.integer("align") != 0;
   options.refresh_bodies = method.scheduler.options.integer("refresh_bodies") != 0;
+  options.reach = method.scheduler.options.number("reach");
   options.rigid = in.rigid;
   ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
                                    method.broad_phase.make(), options);

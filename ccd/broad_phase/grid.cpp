@@ -1,12 +1,18 @@
 #include <ccd/broad_phase/grid.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
 namespace ccd {
 
 void UniformGrid::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
+  hash_current_ = false;  // the boxes may all have changed
+  find_all(boxes, out);
+}
+
+void UniformGrid::find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
   out.clear();
   stats_ = {};
   stats_.rebuilt = true;
@@ -49,6 +55,57 @@ void UniformGrid::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>&
   cells_.set_threads(options_.threads);
   cells_.build(boxes, {}, cell, origin, span);
   stats_.box_tests = cells_.find_pairs(out);
+}
+
+void UniformGrid::update(std::span<const Aabb> boxes, std::span<const std::uint32_t> moved,
+                         std::vector<BodyPair>& out) {
+  out.clear();
+  const std::size_t n = boxes.size();
+  if (moved.empty()) return;
+  if (hash_current_ && hash_.size() == n)  // keep the hashed grid current: O(moved)
+    for (const std::uint32_t m : moved) hash_.move(m, boxes[m]);
+  else
+    hash_current_ = false;
+  if (moved.size() * 4 >= n) {  // a large batch: one sorted pass, filtered
+    find_all(boxes, all_);
+    order_.assign(n, 0);
+    for (const std::uint32_t m : moved) order_[m] = 1;
+    for (const BodyPair& p : all_)
+      if (order_[p.a] || order_[p.b]) out.push_back(p);
+    for (const std::uint32_t m : moved) order_[m] = 0;
+    return;
+  }
+  stats_ = {};
+  if (!hash_current_) {
+    double extent = 0.0;
+    for (const Aabb& b : boxes) extent += (b.hi - b.lo).maxCoeff();
+    extent = 2.0 * extent / static_cast<double>(n);  // most boxes then cover 1 to 8 cells
+    hash_.build(boxes, std::isfinite(extent) && extent > 0.0 ? extent : 1.0);
+    hash_current_ = true;
+    stats_.rebuilt = true;
+    seen_.assign(n, 0);
+    order_.assign(n, 0);
+    query_ = 0;
+  }
+  for (std::size_t k = 0; k < moved.size(); ++k) order_[moved[k]] = static_cast<std::uint32_t>(k + 1);
+  for (std::size_t k = 0; k < moved.size(); ++k) {
+    const std::uint32_t m = moved[k];
+    if (++query_ == 0) {  // wrapped: forget the old marks
+      std::fill(seen_.begin(), seen_.end(), 0);
+      query_ = 1;
+    }
+    seen_[m] = query_;
+    const Aabb& box = boxes[m];
+    hash_.visit(box, [&](std::uint32_t j) {
+      if (seen_[j] == query_) return;
+      seen_[j] = query_;
+      // A pair of two moved bodies is written once, from the first of them in `moved`.
+      if (order_[j] != 0 && order_[j] <= k) return;
+      ++stats_.box_tests;
+      if (box.overlaps(boxes[j])) out.push_back(m < j ? BodyPair{m, j} : BodyPair{j, m});
+    });
+  }
+  for (const std::uint32_t m : moved) order_[m] = 0;
 }
 
 }  // namespace ccd

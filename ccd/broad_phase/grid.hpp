@@ -13,8 +13,17 @@
 // no allocation once the buffers have grown. Degrades when sizes vary widely (small
 // boxes crowd into cells sized for the largest): use `hgrid` then.
 // Boxes must be finite with lo <= hi; N = 0 or 1 gives no pairs.
+//
+// Incremental update (update(), for the earliest scheduler): a batch of fewer than a
+// quarter of the bodies moves only those bodies in a hashed grid kept between calls
+// (ccd/broad_phase/cell_hash.hpp; cell size twice the mean largest box extent, chosen when
+// it is built) and tests each moved box against the bodies listed in its cells: O(moved x cell
+// occupancy), independent of N. A larger batch goes
+// through the sorted grid, filtered (the hashed grid, once built, is kept current by every
+// update; a find_pairs call in between makes it rebuild at the next small batch).
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/cell_grid.hpp>
+#include <ccd/broad_phase/cell_hash.hpp>
 
 namespace ccd {
 
@@ -35,15 +44,24 @@ class UniformGrid final : public BroadPhase {
  public:
   explicit UniformGrid(GridOptions options = {}) : options_(options) {}
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) override;
+  void update(std::span<const Aabb> boxes, std::span<const std::uint32_t> moved, std::vector<BodyPair>& out) override;
   BroadPhaseStats stats() const override { return stats_; }
   /// Cell size used in the last call.
   double cell_size() const { return cell_; }
 
  private:
+  void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // find_pairs' pass
+
   GridOptions options_;
   double cell_ = 0.0;
   detail::CellGrid cells_;
   BroadPhaseStats stats_;
+  detail::CellHash hash_;      // the incremental update's grid
+  bool hash_current_ = false;  // hash_ lists the boxes of the last call
+  std::vector<std::uint32_t> seen_;   // per body: the last query that visited it
+  std::vector<std::uint32_t> order_;  // per body: 1 + its place in `moved`, 0 if not moved
+  std::uint32_t query_ = 0;
+  std::vector<BodyPair> all_;  // a large batch's pairs before filtering
 };
 
 }  // namespace ccd

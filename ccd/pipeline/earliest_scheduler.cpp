@@ -13,6 +13,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Speed-adapted windows are at least dt / 2^10 long.
+constexpr int kMaxWindowHalvings = 10;
+
 enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
 
 struct Event {
@@ -64,6 +67,8 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
   if (!(options.window > 0.0)) throw std::invalid_argument("the earliest scheduler needs a window dt > 0");
   if (!(options.stale > 0.0 && options.stale <= 1.0))
     throw std::invalid_argument("the earliest scheduler needs stale in (0, 1]");
+  if (!(options.reach >= 0.0 && std::isfinite(options.reach)))
+    throw std::invalid_argument("the earliest scheduler needs a finite reach >= 0");
 }
 
 bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
@@ -109,28 +114,67 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
     if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
   };
-  // Refreshes the bodies of `batch` at time t over [t, min(t + dt, T)].
+  // Speed-adapted windows: the length of body i's window from its state (set at its start).
+  double reach_length = 0.0;
+  if (options_.reach > 0.0 && n > 0) {
+    double radii = 0.0;
+    for (std::uint32_t i = 0; i < n; ++i) radii += motion.radius(i);
+    reach_length = options_.reach * radii / static_cast<double>(n);
+  }
+  const auto window_length = [&](std::uint32_t i) {
+    double w = dt;
+    if (!(reach_length > 0.0)) return w;
+    const double v = states[i].velocity.norm();
+    for (int k = 0; k < kMaxWindowHalvings && v * w + 0.5 * acceleration_bound * w * w > reach_length; ++k) w *= 0.5;
+    return w;
+  };
+  // The end of body i's window starting at t.
+  const auto window_end = [&](std::uint32_t i, double t) {
+    const double w = window_length(i);
+    double w1 = t + w;
+    if (options_.align) {  // the next grid time k w > t (the product, as the fixed steps' times)
+      double k = std::floor(t / w) + 1.0;
+      while (k > 1.0 && (k - 1.0) * w > t) k -= 1.0;
+      while (k * w <= t) k += 1.0;
+      w1 = k * w;
+    }
+    return std::min(w1, T);
+  };
+  // Rebuilds the bounds of `batch` (states set) from t, each over its own window, one
+  // Bound::refresh per distinct window end; sorts `batch` by (end, body) when ends differ.
+  std::vector<double> ends(n, 0.0);
+  std::vector<std::uint32_t> group;
+  const auto build_windows = [&](double t) {
+    bool same = true;
+    for (const std::uint32_t i : batch) {
+      ends[i] = window_end(i, t);
+      same = same && ends[i] == ends[batch.front()];
+    }
+    ctx.t0 = t;
+    ctx.start = states;
+    if (!same)
+      std::sort(batch.begin(), batch.end(),
+                [&](std::uint32_t x, std::uint32_t y) { return ends[x] != ends[y] ? ends[x] < ends[y] : x < y; });
+    for (std::size_t b = 0; b < batch.size();) {
+      std::size_t e = b + 1;
+      while (e < batch.size() && ends[batch[e]] == ends[batch[b]]) ++e;
+      group.assign(batch.begin() + static_cast<std::ptrdiff_t>(b), batch.begin() + static_cast<std::ptrdiff_t>(e));
+      ctx.t1 = ends[batch[b]];
+      bound_->refresh(ctx, group, boxes);
+      b = e;
+    }
+  };
+  // Refreshes the bodies of `batch` at time t over their next windows.
   const auto refresh = [&](double t) {
     ++stats_.batches;
     stats_.refreshes += batch.size();
-    double w1 = t + dt;
-    if (options_.align) {  // the next grid time k dt > t (the product, as the fixed steps' times)
-      double k = std::floor(t / dt) + 1.0;
-      while (k > 1.0 && (k - 1.0) * dt > t) k -= 1.0;
-      while (k * dt <= t) k += 1.0;
-      w1 = k * dt;
-    }
-    w1 = std::min(w1, T);
     watch.start();
     for (const std::uint32_t i : batch) state_at(i, t);
-    ctx.t0 = t;
-    ctx.t1 = w1;
-    ctx.start = states;
-    bound_->refresh(ctx, batch, boxes);
+    build_windows(t);
     watch.stop(local.bound);
     for (const std::uint32_t i : batch) {
       ++version[i];
-      queue_expiry(i, w1);
+      queue_expiry(i, ends[i]);
     }
     watch.start();
     broad_->update(boxes, batch, pairs);
@@ -149,8 +193,16 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     ctx.t1 = std::min(dt, T);
     ctx.start = states;
     bound_->prepare(ctx, boxes);
-    watch.stop(local.bound);
     stats_.refreshes += n;
+    std::fill(ends.begin(), ends.end(), ctx.t1);
+    if (reach_length > 0.0) {  // bodies with shorter windows: rebuilt over those
+      batch.clear();
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (window_end(i, 0.0) != ctx.t1) batch.push_back(i);
+      stats_.refreshes += batch.size();
+      if (!batch.empty()) build_windows(0.0);
+    }
+    watch.stop(local.bound);
     ++stats_.batches;
     watch.start();
     broad_->find_pairs(boxes, pairs);
@@ -159,7 +211,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     watch.start();
     test_pairs(0.0);
     watch.stop(local.bound);
-    for (std::uint32_t i = 0; i < n; ++i) queue_expiry(i, ctx.t1);
+    for (std::uint32_t i = 0; i < n; ++i) queue_expiry(i, ends[i]);
   }
 
   bool finished = true;

@@ -4,8 +4,9 @@
 // looked at again only at the earliest time its bounds allow contact, so far-apart pairs
 // cost nothing for many windows.
 //
-// State: every body i has a bound over its own window [w0_i, w1_i] (w1_i = min(w0_i + dt,
-// T), or with `align` the next multiple of dt after w0_i), built from its state at w0_i
+// State: every body i has a bound over its own window [w0_i, w1_i] (w1_i = min(w0_i + w_i,
+// T), or with `align` the next multiple of w_i after w0_i; w_i = dt, or with `reach` a
+// speed-adapted dt / 2^k), built from its state at w0_i
 // (Bound::refresh), and its box in the broad phase. A
 // priority queue holds two kinds of events, in time order (pair checks before expiries at
 // equal times):
@@ -52,6 +53,14 @@ struct ScheduleOptions {
   /// refined at different times still expire together and the broad phase updates them
   /// in one batch); false: at t + dt (every body on its own clock).
   bool align = true;
+  /// > 0: speed-adapted windows. A body's window is the longest dt / 2^k (k <= 10) over
+  /// which it moves at most `reach` x the bodies' mean radius, judged from its state at the
+  /// window start (|v| w + A w^2 / 2); with `align` it ends on a multiple of its own length,
+  /// so bodies of one length still expire together. Slow bodies keep long windows (few
+  /// refreshes), fast ones get short, tight ones (few candidates), and the broad phase
+  /// updates only the bodies that expire. A choice of windows only: coverage (below) holds
+  /// for any windows. 0: every window is dt long.
+  double reach = 0.0;
   /// false: a refinement builds the pair's own bounds (a second bound instance); true: it
   /// refreshes the two bodies' bounds, with a broad-phase update and a re-test of their pairs.
   bool refresh_bodies = false;

@@ -19,6 +19,10 @@ constexpr ParameterSpec kEarliestParameters[] = {
     {"align", 1.0,
      "1: a refreshed window ends at the next multiple of dt, so bodies expire together; 0: at its start + dt",
      ParameterKind::Integer, {0.0, 1.0}},
+    {"reach", 0.0,
+     "> 0: speed-adapted windows, each body's the longest dt / 2^k over which it moves at most reach x the "
+     "bodies' mean radius (fast bodies refresh often, slow ones rarely); 0: every window dt",
+     ParameterKind::Real, {0.0, 1e9}},
     {"refresh_bodies", 0.0,
      "0: a refinement builds the pair's own bounds; 1: it refreshes both bodies' bounds (broad-phase update, "
      "every pair of theirs re-tested)",

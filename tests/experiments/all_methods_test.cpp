@@ -2,7 +2,8 @@
 // gravity and different accelerations: conservative methods miss nothing, discrete
 // methods detect exactly the events that contain a sample time, and every method's
 // self-check passes. Iterates the registries, so a new bound or broad phase is covered;
-// every space-time method also runs under the earliest scheduler (BOUND/BROADPHASE@earliest).
+// every space-time method also runs under the earliest scheduler (BOUND/BROADPHASE@earliest),
+// with windows of dt and with speed-adapted ones (`reach`).
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
 
@@ -36,7 +37,10 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
   in.acceleration_bound = scene.max_acceleration();
   REQUIRE(!truth.events().empty());
   std::vector<std::string> names = ccdlab::all_method_names();
-  for (const std::string& m : ccdlab::scheduled_method_names()) names.push_back(m);
+  for (const std::string& m : ccdlab::scheduled_method_names()) {
+    names.push_back(m);
+    names.push_back(m + ":reach=1");  // speed-adapted windows: the broad phases' incremental updates
+  }
   for (const std::string& name : names) {
     INFO(c.generator << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);

@@ -137,6 +137,8 @@ TEST_CASE("exact scenes: conservative methods miss nothing, every self-check is 
       names.push_back(m);
       names.push_back(m + ":stale=0.01");  // refined often: the pairs' own bounds
       names.push_back(m + ":stale=0.01,align=0,refresh_bodies=1");  // bodies refreshed, each on its own clock
+      names.push_back(m + ":reach=64");  // speed-adapted windows: fast bodies on short ones
+      names.push_back(m + ":reach=64,stale=0.01,align=0,refresh_bodies=1");
     }
     for (const std::string& name : names) {
       const ccdlab::MethodSpec m = ccdlab::parse_method(name);

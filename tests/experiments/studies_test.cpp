@@ -240,6 +240,10 @@ TEST_CASE("study scheduling: @earliest misses nothing and detects what fixed ste
         // calls than the pair tests that passed.
         CHECK(sched.narrow_calls <= sched.bound_candidates);
         CHECK(sched.refreshes >= s.traj.size());
+        const auto adapted = s.run(std::string(m) + "@earliest:reach=4", dt);  // speed-adapted windows
+        CHECK(adapted.missed == 0);
+        CHECK(adapted.detected == fixed.detected);
+        check_self(adapted);
       }
     }
   }

@@ -21,13 +21,14 @@ using ccd::Vec3;
 namespace {
 
 ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
-                            bool align = true, bool refresh_bodies = false) {
+                            bool align = true, bool refresh_bodies = false, double reach = 0.0) {
   const ccd::BoundSpec b = ccd::parse_bound(bound);
   ccd::ScheduleOptions o;
   o.window = dt;
   o.stale = stale;
   o.align = align;
   o.refresh_bodies = refresh_bodies;
+  o.reach = reach;
   return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
 }
 
@@ -63,11 +64,14 @@ TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipe
   const double A = scene.max_acceleration();
   for (const char* bound : {"horn:4", "capsule", "horn_sat:3", "swept_aabb", "enclosing_sphere"}) {
     for (const double stale : {0.01, 0.25, 1.0}) {
-      for (const int mode : {0, 1, 2}) {  // pair refinement; body refreshes aligned; on own clocks
-        const bool align = mode != 2, refresh_bodies = mode != 0;
+      // pair refinement; body refreshes aligned; on own clocks; then the same three with
+      // speed-adapted windows (reach: every body its own window length)
+      for (const int mode : {0, 1, 2, 3, 4, 5}) {
+        const bool align = mode % 3 != 2, refresh_bodies = mode % 3 != 0;
+        const double reach = mode >= 3 ? 1.0 : 0.0;
         for (const double dt : {0.05, 0.3}) {  // 0.3 does not divide the horizon
           INFO(s.generator << " " << bound << " stale " << stale << " mode " << mode << " dt " << dt);
-          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align, refresh_bodies);
+          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align, refresh_bodies, reach);
           std::vector<ccd::ScheduledContact> contacts;
           REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
           CHECK(undetected(events, contacts, 1e-9 * scene.horizon) == 0);
@@ -78,7 +82,7 @@ TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipe
             CHECK(c.from <= c.contact.toi);
             CHECK(c.contact.toi <= c.to);
           }
-          if (stale == 1.0 && align) {
+          if (stale == 1.0 && align && reach == 0.0) {
             // No refinement: every body refreshes at every window, as fixed steps would.
             const double windows = std::ceil(scene.horizon / dt);
             CHECK(st.refreshes == traj.size() * static_cast<std::uint64_t>(windows));
@@ -123,6 +127,43 @@ TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipel
   }
 }
 
+TEST_CASE("speed-adapted windows: fast bodies refresh often, slow ones once per dt", "[pipeline][scheduler]") {
+  // Radius 1/2 everywhere, so reach 2 is a length of 1. Body 0 flies at 64 along x: its
+  // windows are dt / 64 (64 x 1/64 = 1, not more than the reach); body 1 rests in its way
+  // (surfaces 31 apart at t = 0: contact at t = 31/64 exactly); body 2 moves at 3/4 far
+  // away (a whole window of dt = 1); body 3 at 3 (windows of 1/4). The fast body's short
+  // boxes never meet body 2's, and the broad phase updates only the bodies that expire.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(64, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(32, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(16, 8, 0), Vec3(0.75, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, -40, 0), Vec3(0, 3, 0)));
+  const ccd::Trajectories traj(s);
+  for (const char* bound : {"horn:4", "capsule", "swept_aabb", "enclosing_sphere"}) {
+    for (const char* broad : {"grid", "sap", "brute"}) {
+      for (const bool align : {true, false}) {
+        INFO(bound << " " << broad << " align " << align);
+        ccd::EarliestScheduler sched = make(bound, broad, 1.0, 1.0, align, false, 2.0);
+        std::vector<ccd::ScheduledContact> contacts;
+        REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
+        // Contact begins exactly at a window boundary of body 0: found from the window
+        // that ends there (a later one may report the pair overlapping).
+        REQUIRE(!contacts.empty());
+        for (const ccd::ScheduledContact& c : contacts) CHECK(c.pair == ccd::BodyPair{0, 1});
+        CHECK(contacts[0].contact.toi == 31.0 / 64.0);
+        CHECK(contacts[0].to == 31.0 / 64.0);
+        // 4 bounds at t = 0 over dt, bodies 0 and 3 rebuilt at once over their shorter
+        // windows, then 63 expiries of body 0 and 3 of body 3 (body 1 and 2 never expire).
+        CHECK(sched.stats().refreshes == 4 + 2 + 63 + 3);
+        // Body 0 checked against body 1 only in the windows where their boxes meet; body 2
+        // and 3 never meet anything.
+        CHECK(sched.stats().candidates <= 4);
+      }
+    }
+  }
+}
+
 TEST_CASE("the refinement terminates on a grazing pair", "[pipeline][scheduler]") {
   // Tangent at t = 1/2 (dyadic: y offset exactly r_a + r_b): a bound's earliest creeps up
   // on 1/2 without reaching it; each refinement must advance a window by stale x dt.
@@ -152,6 +193,11 @@ TEST_CASE("the earliest scheduler refuses what it cannot run", "[pipeline][sched
                                          ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
   const ccd::BoundSpec capsule = ccd::parse_bound("capsule");
+  o.reach = -1.0;
+  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
+                  std::invalid_argument);
+  o.reach = 0.0;
   o.window = 0.0;
   CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
                                          ccd::parse_broad_phase("grid").make(), o),
