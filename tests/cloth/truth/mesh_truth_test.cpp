@@ -116,15 +116,18 @@ TEST_CASE("mesh truth: distance exactly the thickness is a contact, 2^-30 less i
 
 TEST_CASE("mesh truth: the box filter equals brute force on a crumpled grid, whatever the threads",
           "[cloth][truth]") {
-  // A 5 x 5 grid's mesh with every vertex at a random dyadic point of the unit cube (k / 64)
-  // in each of four states: many pairs touch, many pass near.
-  const ClothScene s = builtin_cloth_scene("pile", 5);
+  // A 4 x 4 grid's mesh with every vertex at a random dyadic point of the unit cube (k / 32),
+  // then moved by up to 1/32 per coordinate in each of two steps: many pairs touch, many
+  // pass near.
+  const ClothScene s = builtin_cloth_scene("pile", 4);
   const ClothMesh mesh = make_grid_mesh(s);
   std::mt19937_64 rng(16);
-  std::uniform_int_distribution<int> coord(0, 64);
-  std::vector<std::vector<Vec3>> frames(4, std::vector<Vec3>(s.particle_count()));
-  for (auto& f : frames)
-    for (Vec3& x : f) x = Vec3(coord(rng), coord(rng), coord(rng)) / 64.0;
+  std::uniform_int_distribution<int> coord(0, 32), step(-1, 1);
+  std::vector<std::vector<Vec3>> frames(3, std::vector<Vec3>(s.particle_count()));
+  for (Vec3& x : frames[0]) x = Vec3(coord(rng), coord(rng), coord(rng)) / 32.0;
+  for (std::size_t k = 1; k < frames.size(); ++k)
+    for (std::size_t v = 0; v < frames[k].size(); ++v)
+      frames[k][v] = frames[k - 1][v] + Vec3(step(rng), step(rng), step(rng)) / 32.0;
   const double d = 1.0 / 16;
   const auto all = brute_force_candidates(mesh, s.particle_count());
   std::size_t contacts = 0;
