@@ -129,10 +129,17 @@ std::string summary_markdown(const json& results) {
   const auto c = cells(build(results));
   std::string out = "# Summary: " + results.at("experiment").value("name", std::string("experiment")) + "\n\n";
   const json& scene = results.at("scene");
-  out += std::to_string(scene.value("bodies", 0)) + " bodies over " + number(scene.value("horizon", 0.0), "%g") +
-         " s, " + std::to_string(results.at("truth").value("events", 0)) +
-         " contact events. Missed: percentage of the contact events (not in progress at t = 0) that the "
-         "method did not detect; cost: seconds of computation per simulated second.\n\n";
+  if (results.value("format", std::string()) == "ccdlab-cloth-results/1")  // a cloth experiment
+    out += "A cloth of " + std::to_string(scene.value("triangles", 0)) + " triangles over " +
+           number(scene.value("horizon", 0.0), "%g") + " s, " + std::to_string(results.at("truth").value("events", 0)) +
+           " self-contact events. Methods are CULLER/MODE; dt is the check interval (k integrator steps). Missed: "
+           "percentage of the contact events that the method did not detect; cost: seconds of computation per "
+           "simulated second.\n\n";
+  else
+    out += std::to_string(scene.value("bodies", 0)) + " bodies over " + number(scene.value("horizon", 0.0), "%g") +
+           " s, " + std::to_string(results.at("truth").value("events", 0)) +
+           " contact events. Missed: percentage of the contact events (not in progress at t = 0) that the "
+           "method did not detect; cost: seconds of computation per simulated second.\n\n";
   for (std::size_t i = 0; i < c.size(); ++i) {
     out += "|";
     for (std::string cell : c[i]) {

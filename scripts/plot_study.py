@@ -6,7 +6,7 @@ usage: /usr/bin/python3 scripts/plot_study.py STUDY RESULTS.json... [-o DIR] [--
                                               [--ccdlab PATH]
 
 STUDY is one of: tunnelling, sap-coherence, equal-endpoints, grazing, precision,
-bound-violation, mixed-sizes, scaling, scheduling, spinning, fit. Draws STUDY-*.{png,...} into DIR (default
+bound-violation, mixed-sizes, scaling, scheduling, spinning, fit, cloth. Draws STUDY-*.{png,...} into DIR (default
 results/studies/STUDY/plots), prints a Markdown summary of the key numbers on standard
 output, then each chart's path. Results files may come in any order: each study sorts
 them by its own variable (N, offset, ratio...), read from the results themselves.
@@ -26,7 +26,7 @@ import plot  # noqa: E402  (sets the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
 
 STUDIES = ("tunnelling", "sap-coherence", "equal-endpoints", "grazing", "precision",
-           "bound-violation", "mixed-sizes", "scaling", "scheduling", "spinning", "fit")
+           "bound-violation", "mixed-sizes", "scaling", "scheduling", "spinning", "fit", "cloth")
 
 
 def fail(msg):
@@ -591,6 +591,80 @@ def fit(results, outdir, formats):
     return out, save(fig, outdir, "fit-false-positives", formats)
 
 
+# ---------------------------------------------------------------------------- cloth
+
+CLOTH_ORDER = ("drape", "twist", "pile")
+
+
+def load_cloth(path):
+    """A ccdlab-cloth-results/1 file (exit 2 naming the file and field otherwise)."""
+    try:
+        with open(path) as f:
+            res = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        fail(f"{path}: {e}")
+    if not isinstance(res, dict) or res.get("format") != "ccdlab-cloth-results/1":
+        fail(f"{path}: format: not a ccdlab-cloth-results/1 file")
+    if not res.get("records"):
+        fail(f"{path}: records: no records to plot")
+    for i, r in enumerate(res["records"]):
+        for k in ("method", "mode", "culler", "k", "missed", "events", "candidates", "false_positives",
+                  "checks", "seconds_per_simulated_second", "conservative"):
+            if k not in r:
+                fail(f"{path}: records[{i}].{k}: missing field")
+    return res
+
+
+def cloth_key(res):
+    name = res["scene"]["source"]
+    return CLOTH_ORDER.index(name) if name in CLOTH_ORDER else len(CLOTH_ORDER)
+
+
+def cloth(results, outdir, formats):
+    results = sorted(results, key=cloth_key)
+    out = ["### cloth: self-collision checks every k integrator steps, against the exact mesh truth", ""]
+    rows = (("missed", "missed contact events", "symlog"),
+            ("seconds_per_simulated_second", "seconds per simulated second", "log"),
+            ("fp_per_check", "false positives per check", "symlog"))
+    fig, axes = plt.subplots(len(rows), len(results), figsize=(4.6 * len(results), 3.4 * len(rows)), squeeze=False)
+    for col, res in enumerate(results):
+        sc = res["scene"]
+        name = sc["source"]
+        ks = sorted({r["k"] for r in res["records"]})
+        out += [f"#### {name}: {sc['triangles']} triangles, {sc['steps']} steps of {sc['step']:g} s, thickness "
+                f"{sc['thickness']:g}; {res['truth']['events']} contact events", "",
+                "missed events / false positives / seconds per simulated second, per check interval k", "",
+                "| method | conservative | " + " | ".join(f"k = {k}" for k in ks) + " |",
+                "|---|---|" + "---|" * len(ks)]
+        groups = plot.by_method(res["records"])
+        for i, (m, rs) in enumerate(groups.items()):
+            rs = sorted(rs, key=lambda r: r["k"])
+            by_k = {r["k"]: r for r in rs}
+            out.append(f"| {m} | {'yes' if rs[0]['conservative'] else 'no'} | " + " | ".join(
+                f"{by_k[k]['missed']} / {by_k[k]['false_positives']} / {by_k[k]['seconds_per_simulated_second']:.3g}"
+                if k in by_k else "" for k in ks) + " |")
+            for row, (key, label, scale) in enumerate(rows):
+                ax = axes[row][col]
+                ys = [r["false_positives"] / r["checks"] if key == "fp_per_check" else r[key] for r in rs]
+                ax.plot([r["k"] for r in rs], ys, label=m, linewidth=1.3, markersize=4,
+                        linestyle="-" if rs[0]["mode"] == "continuous" else "--", **plot.style(i))
+        for row, (key, label, scale) in enumerate(rows):
+            ax = axes[row][col]
+            ax.set_xscale("log", base=2)
+            if scale == "symlog":
+                ax.set_yscale("symlog", linthresh=1)
+                ax.set_ylim(bottom=0)
+            else:
+                ax.set_yscale("log")
+            ax.set_xlabel("check interval k (integrator steps)")
+            ax.set_ylabel(label)
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0][col].set_title(f"{name}: {res['truth']['events']} events; dashed: discrete", fontsize=10)
+        out.append("")
+    legend(axes[0][-1], loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    return out, save(fig, outdir, "cloth", formats)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
@@ -604,13 +678,22 @@ def main(argv=None):
     for f in formats:
         if f not in ("png", "svg", "pdf"):
             fail(f"--format: unknown format '{f}' (png, svg, pdf)")
+    outdir = args.output or os.path.join("results", "studies", args.study, "plots")
+    if args.study == "cloth":
+        results = [load_cloth(p) for p in args.results]
+        os.makedirs(outdir, exist_ok=True)
+        lines, paths = cloth(results, outdir, formats)
+        print("\n".join(lines))
+        print()
+        for p in paths:
+            print(p)
+        return
     results = [plot.load(p) for p in args.results]
     for p, res in zip(args.results, results):
         for i, r in enumerate(res["records"]):
             for k in ("steps", "missed", "detected", "broad_seconds", "candidates", "self_check"):
                 if k not in r:
                     fail(f"{p}: records[{i}].{k}: missing field")
-    outdir = args.output or os.path.join("results", "studies", args.study, "plots")
     os.makedirs(outdir, exist_ok=True)
     s = args.study
     if s == "tunnelling":

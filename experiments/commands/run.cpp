@@ -2,10 +2,12 @@
 //  [--force] [--list-missed]`
 #include "command.hpp"
 
+#include "../run_cloth_experiment.hpp"
 #include "../run_experiment.hpp"
 #include "../summary.hpp"
 
 #include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -14,6 +16,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <new>
@@ -39,12 +42,45 @@ bool parse_int(const std::string& s, int& out) {
   return v.has_value();
 }
 
+// A cloth experiment (ccdlab-cloth-experiment/1): simulate, exact mesh truth (cached in
+// TRUTH_CACHE, by default the folder cloth-truth beside the results), every job.
+int run_cloth(const std::string& experiment_path, std::string out_path, int threads, bool quiet,
+              std::string truth_cache) {
+  ClothExperiment e = load_cloth_experiment(experiment_path);
+  const ccd::cloth::ClothScene scene = load_cloth_experiment_scene(e, experiment_path);
+  if (out_path.empty()) out_path = "results/" + e.name + ".json";
+  if (truth_cache.empty() && out_path != "-")
+    truth_cache = (std::filesystem::path(out_path).parent_path() / "cloth-truth").string();
+  const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path};
+  ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
+  ClothRunOptions options;
+  options.threads = threads;
+  options.quiet = quiet;
+  options.truth_cache = truth_cache;
+  options.cancel = &g_cancel;
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  const nlohmann::json results = run_cloth_experiment(e, scene, options);
+  if (results.is_null()) {
+    std::cerr << "ccdlab run: interrupted; no results written\n";
+    return 130;
+  }
+  output.commit(results.dump(1) + "\n");
+  (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
+  if (out_path != "-") {
+    const std::string summary_file = summary_path(out_path);
+    ccd::write_file_atomically(summary_file, summary_markdown(results));
+    std::cout << "results: " << out_path << "\nsummary: " << summary_file << "\n";
+  }
+  return 0;
+}
+
 int run_run(std::span<const std::string> args) {
   auto usage_error = [](const std::string& msg) {
     std::cerr << "ccdlab run: " << msg << " (see ccdlab run --help)\n";
     return kExitBadInput;
   };
-  std::string experiment_path, out_path, truth_path, summary_file;
+  std::string experiment_path, out_path, truth_path, summary_file, truth_cache;
   bool force = false, list_missed = false;
   RunOptions options;
   options.threads = static_cast<int>(ccd::resolve_threads(0));
@@ -72,6 +108,10 @@ int run_run(std::span<const std::string> args) {
       const std::string* v = value("--truth");
       if (!v) return usage_error("--truth needs a truth file (ccdlab truth SCENE.json -o FILE)");
       truth_path = *v;
+    } else if (a == "--truth-cache") {
+      const std::string* v = value("--truth-cache");
+      if (!v || v->empty()) return usage_error("--truth-cache needs a folder");
+      truth_cache = *v;
     } else if (a == "--quiet" || a == "-q") {
       options.quiet = true;
     } else if (a == "--force") {
@@ -87,6 +127,27 @@ int run_run(std::span<const std::string> args) {
     }
   }
   if (experiment_path.empty()) return usage_error("missing EXPERIMENT.json");
+
+  try {
+    // A pipe is read once, by the sphere runner; a cloth experiment is a regular file.
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(experiment_path, ec) &&
+        is_cloth_experiment(ccd::read_json_file(experiment_path))) {
+      if (options.shard.count > 1 || !truth_path.empty() || list_missed || force)
+        return usage_error("--shard, --truth, --list-missed and --force apply to sphere and rigid experiments only");
+      return run_cloth(experiment_path, out_path, options.threads, options.quiet, truth_cache);
+    }
+    if (!truth_cache.empty()) return usage_error("--truth-cache applies to cloth experiments only");
+  } catch (const ccd::InputError& err) {
+    std::cerr << "ccdlab run: " << err.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab run: out of memory running " << experiment_path << "\n";
+    return 1;
+  } catch (const std::exception& err) {
+    std::cerr << "ccdlab run: " << err.what() << "\n";
+    return 1;
+  }
 
   // What is being done, for the one line that says what was too big if memory runs out.
   std::string doing = "reading " + experiment_path;
@@ -195,7 +256,7 @@ int run_run(std::span<const std::string> args) {
 extern const Command kRunCommand = {
     "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
     "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
-    "                  [--force] [--list-missed]\n"
+    "                  [--force] [--list-missed] [--truth-cache DIR]\n"
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
     "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
@@ -220,6 +281,12 @@ extern const Command kRunCommand = {
     "                     jobs) is above 1e11 body-steps\n"
     "  --list-missed      every record lists the contact events it missed (missed_events:\n"
     "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
+    "  --truth-cache DIR  cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
+    "                     mesh truth is kept, one file per motion digest, read back when\n"
+    "                     present (default: cloth-truth/ beside the results file)\n"
+    "\n"
+    "A cloth experiment runs every culler in the discrete and continuous modes at every\n"
+    "check interval k against the exact mesh truth (docs/experiments.md#cloth-experiments).\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",
     run_run};

@@ -1,6 +1,7 @@
 // Every JSON example in the README and docs/ is valid JSON, and every scene or experiment
 // among them is accepted by its reader (strict fields included), so that a newcomer can
 // copy it. The shipped data files are checked the same way.
+#include "../../experiments/cloth_experiment.hpp"
 #include "../../experiments/experiment.hpp"
 
 #include <ccd/io/json_reader.hpp>
@@ -50,6 +51,8 @@ void check_document(const nlohmann::json& j, const std::string& where) {
       INFO(scene.string());
       CHECK_NOTHROW(ccd::load_scene(scene.lexically_normal().string()));
     }
+  } else if (format == ccdlab::kClothExperimentFormat) {
+    CHECK_NOTHROW(ccdlab::cloth_experiment_from_json(j, where));
   }
 }
 
