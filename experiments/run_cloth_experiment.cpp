@@ -117,6 +117,9 @@ ClothRecord run_cloth_method(const ClothMotion& m, const ccd::cloth::CullerEntry
   std::vector<std::vector<Candidate>> confirmed(checks);
   for (int rep = 0; rep < repeats; ++rep) {
     const auto t_total = Clock::now();
+    // One instance per pass over the run: cullers that keep state (the bvh refits its tree)
+    // carry it from one check to the next, as in a simulation.
+    const std::unique_ptr<ccd::cloth::Culler> instance = culler.make();
     double cull = 0.0, narrow = 0.0;
     std::uint64_t candidates = 0, hits = 0;
     double max_sep = 0.0;
@@ -131,7 +134,7 @@ ClothRecord run_cloth_method(const ClothMotion& m, const ccd::cloth::CullerEntry
       const auto& x0 = m.frames[start];
       const auto& x1 = m.frames[end];
       auto t0 = Clock::now();
-      const std::vector<Candidate> found = culler.cull(m.mesh, x0, x1, sep);
+      const std::vector<Candidate> found = instance->cull(m.mesh, x0, x1, sep);
       cull += since(t0);
       t0 = Clock::now();
       kernel.separation = sep;
