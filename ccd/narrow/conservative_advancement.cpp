@@ -43,6 +43,7 @@ struct BodyStep {
   /// max |core point| when the spin changes in the step
   double rho = 0.0;
   double radius = 0.0;                       ///< enclosing radius
+  double reach = 0.0;                        ///< max |core point| (rounded up)
 
   BodyStep(const RigidMotion& motion, std::uint32_t b, double t0, double t1) : m(&motion), body(b), proxy(motion.proxy(b)) {
     radius = motion.enclosing_radius(b);
@@ -62,6 +63,7 @@ struct BodyStep {
     double rho2 = 0.0;
     for (const Vec3& q : proxy.points) rho2 = std::max(rho2, q.squaredNorm());
     rho = std::sqrt(rho2);
+    reach = rho * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
     if (spin && turning) {
       omega = spin->omega.norm();
       axis = spin->omega / omega;
@@ -89,6 +91,20 @@ struct BodyStep {
       p.rotation = m->rotations().orientation(body, t).toRotationMatrix();
     }
     return p;
+  }
+
+  /// The spin over the step (zero when not turning); only with `spin` or not `turning`.
+  Vec3 spin_vector() const { return turning ? spin->omega : Vec3::Zero(); }
+
+  // max |v| of the centre over [u0, u1] (|v| is convex and v linear on each piece).
+  double max_speed(double u0, double u1) const {
+    if (piece && piece->a.isZero(0.0)) return piece->v.norm();
+    double x = 0.0;
+    for (const Piece& q : m->centres().pieces(body)) {
+      if (q.t1 < u0 || q.t0 > u1) continue;
+      x = std::max({x, q.velocity(std::max(u0, q.t0)).norm(), q.velocity(std::min(u1, q.t1)).norm()});
+    }
+    return x;
   }
 
   // Extremes of n.v over [u0, u1] (n.v is linear on each trajectory piece); adds the
@@ -143,6 +159,37 @@ SpinTerm spin_term(const BodyStep& x, const Pose& pose, const Vec3& n, double si
   return s;
 }
 
+// The first s >= 0 with c0 s + c1 s^2 / 2 = gap (c1 >= 0), rounded down; inf if none.
+double time_to_close(double c0, double c1, double gap) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  if (c1 == 0.0) return c0 > 0.0 ? gap / c0 * (1.0 - 4.0 * eps) : std::numeric_limits<double>::infinity();
+  const double root = std::sqrt(c0 * c0 + 2.0 * c1 * gap);
+  return (c0 >= 0.0 ? 2.0 * gap / (c0 + root) : (root - c0) / c1) * (1.0 - 16.0 * eps);
+}
+
+// The relative bound, in the body frame of `f` (both bodies keeping one spin over the
+// rest of the step): there f's core is still, and a point r (body frame of `o`, posed
+// offset R_o r) of o's core moves at
+//   |v_o - v_f + (omega_o - omega_f) x R_o r - omega_f x (c_o - c_f)|
+//     <= V + |omega_o - omega_f| R_o + |omega_f x dc(t)| + |omega_f| V s
+// after s seconds, V = max |v_f| + max |v_o| over the step, dc = c_o - c_f (which moves
+// by at most V s). The distance of the cores (the gap plus the radii) is 1-Lipschitz in
+// the displacement of o's core, so the gap cannot close before c0 s + c1 s^2 / 2 = gap
+// with c0 = V + |omega_o - omega_f| R_o + |omega_f x dc(t)|, c1 = |omega_f| V. For a body
+// spinning against a small one this is the speed of the small one's points about the
+// spin axis, not of the spinning body's far end.
+double relative_advance(const BodyStep& f, const BodyStep& o, const Pose& pf, const Pose& po, double gap, double u0,
+                        double u1) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  const Vec3 wf = f.spin_vector(), wo = o.spin_vector();
+  const double speed = f.max_speed(u0, u1) + o.max_speed(u0, u1);
+  const Vec3 dc = po.centre - pf.centre;
+  const double wfn = wf.norm();
+  const double c0 = speed + (wo - wf).norm() * o.reach + wf.cross(dc).norm();
+  const double scale = speed + (wo.norm() + wfn) * o.reach + wfn * dc.norm();
+  return time_to_close(c0 + 64.0 * eps * scale, wfn * speed * (1.0 + 64.0 * eps), gap);
+}
+
 double advance(const BodyStep& a, const BodyStep& b, const Pose& pa, const Pose& pb, const Vec3& n, double gap,
                double mu, double u0, double u1) {
   const double inf = std::numeric_limits<double>::infinity();
@@ -167,6 +214,7 @@ double advance(const BodyStep& a, const BodyStep& b, const Pose& pa, const Pose&
       s2 = (c0 >= 0.0 ? 2.0 * gap / (c0 + root) : (root - c0) / c1) * (1.0 - 16.0 * eps);
     }
     best = std::max(best, s2);
+    best = std::max({best, relative_advance(a, b, pa, pb, gap, u0, u1), relative_advance(b, a, pb, pa, gap, u0, u1)});
   }
   return best;
 }
