@@ -121,6 +121,21 @@ TEST_CASE("merge validates every field of every shard and names file and field",
     first["records"][1]["job"] = 0;
     CHECK(merge_error(s.shards) == s1 + ": records[1].job: job 0 appears twice");
   }
+  SECTION("counts: initial contacts + detected + missed = events") {
+    json& rec = first["records"][0];
+    const std::uint64_t events = rec["events"].get<std::uint64_t>();
+    REQUIRE(events > 0);
+    // Every event in progress at t = 0 (a scene whose bodies start overlapping): valid.
+    rec["initial_contacts"] = events;
+    rec["detected"] = 0;
+    rec["missed"] = 0;
+    CHECK(merge_error(s.shards) == "merged");
+    rec["missed"] = 1;
+    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: initial_contacts + detected + missed must equal events");
+    rec["missed"] = 0;
+    rec["initial_contacts"] = events + 1;
+    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: initial_contacts + detected + missed must equal events");
+  }
   SECTION("a record that is not its job's method or dt") {
     first["records"][0]["method"] = "capsule/grid";
     CHECK(merge_error(s.shards) == s1 + ": records[0].method: must be 'aabb/sap', the method of job 0");
