@@ -19,7 +19,10 @@ targets=("$@")
 build=${CCDLAB_FUZZ_BUILD_DIR:-$root/build-fuzz}
 
 command -v clang++ >/dev/null || "$root/scripts/install-deps.sh" clang libclang-rt-dev
+# CCDLAB_FUZZ_FLAGS: the compiler's optimisation and debug flags (default -O2 -g -DNDEBUG, CMake's;
+# CI uses -O1 -g1 -DNDEBUG, which compiles faster for its short smoke run).
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCCDLAB_FUZZ=ON \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="${CCDLAB_FUZZ_FLAGS:--O2 -g -DNDEBUG}" \
   -DCCDLAB_BENCHMARKS=OFF -DBUILD_TESTING=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
 
