@@ -1,4 +1,5 @@
 #include "cloth_experiment.hpp"
+#include "experiment.hpp"
 
 #include <cloth/cull/cullers.hpp>
 #include <ccd/io/json_reader.hpp>
@@ -23,20 +24,7 @@ ClothExperiment cloth_experiment_from_json(const json& j, const std::string& fil
   r.only_fields(j, "", {"format", "name", "description", "scene", "n", "steps", "thickness", "k", "cullers", "modes",
                         "repeats"});
   ClothExperiment e;
-  if (j.contains("name")) {
-    e.name = r.string(j["name"], "name");
-    if (e.name.empty() || e.name.size() > 200 || e.name.front() == '.' || e.name.front() == '-' ||
-        !std::all_of(e.name.begin(), e.name.end(), [](char c) {
-          return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-        }))
-      r.fail("name", "'" + e.name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not "
-                     "starting with '.' or '-'");
-  } else {
-    e.name = std::filesystem::path(file).stem().string().substr(0, 200);
-    for (char& c : e.name)
-      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) c = '_';
-    if (e.name.empty() || e.name.front() == '.' || e.name.front() == '-') e.name = "cloth-experiment";
-  }
+  e.name = experiment_name(j, file, "cloth-experiment");
   const std::string scene = r.string(r.require(j, "scene", ""), "scene");
   if (scene.empty()) r.fail("scene", "must be a built-in scene (drape, twist, pile) or a ccdlab-cloth/1 file");
   const auto names = ccd::cloth::builtin_cloth_scene_names();

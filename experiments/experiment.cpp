@@ -90,6 +90,28 @@ void parse_timesteps(const JsonReader& r, const json& j, Experiment& e) {
 
 }  // namespace
 
+std::string experiment_name(const json& j, const std::string& file, const std::string& fallback) {
+  const JsonReader r{file};
+  const auto plain = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-'; };
+  std::string name;
+  if (j.contains("name")) {
+    name = r.string(j["name"], "name");
+    // The name becomes a file name (results/NAME.json): never a path.
+    if (name.empty() || name.size() > 200 || name.front() == '.' || name.front() == '-' ||
+        !std::all_of(name.begin(), name.end(), plain))
+      r.fail("name", "'" + name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not "
+                     "starting with '.' or '-' (the default results file is results/NAME.json)");
+  } else {
+    // The file's stem, with anything but letters, digits, '.', '_' and '-' made '_'.
+    name = std::filesystem::path(file).stem().string().substr(0, 200);
+    for (char& c : name)
+      if (!plain(c)) c = '_';
+    if (name.empty()) name = fallback;
+    if (name.front() == '.' || name.front() == '-') name.front() = '_';
+  }
+  return name;
+}
+
 Experiment experiment_from_json(const json& j, const std::string& file) {
   const JsonReader r{file};
   if (!j.is_object()) r.fail("", "an experiment must be a JSON object");
@@ -98,23 +120,7 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
   r.only_fields(j, "", {"format", "name", "description", "scene", "dt", "hz", "methods", "acceleration_bound",
                         "repeats", "list_missed"});
   Experiment e;
-  if (j.contains("name")) {
-    e.name = r.string(j["name"], "name");
-    // The name becomes a file name (results/NAME.json): never a path.
-    if (e.name.empty() || e.name.size() > 200 || e.name.front() == '.' || e.name.front() == '-' ||
-        !std::all_of(e.name.begin(), e.name.end(), [](char c) {
-          return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
-        }))
-      r.fail("name", "'" + e.name + "' is not a plain file name: 1 to 200 letters, digits, '.', '_' or '-', not "
-                     "starting with '.' or '-' (the default results file is results/NAME.json)");
-  } else {
-    // The file's stem, with anything but letters, digits, '.', '_' and '-' made '_'.
-    e.name = std::filesystem::path(file).stem().string().substr(0, 200);
-    for (char& c : e.name)
-      if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-')) c = '_';
-    if (e.name.empty()) e.name = "experiment";
-    if (e.name.front() == '.' || e.name.front() == '-') e.name.front() = '_';
-  }
+  e.name = experiment_name(j, file, "experiment");
   const json& scene = r.require(j, "scene", "");
   if (scene.is_string()) {
     e.scene_path = scene.get<std::string>();

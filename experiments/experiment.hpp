@@ -25,6 +25,10 @@ struct Experiment {
   nlohmann::json source;              ///< the parsed file with defaults filled in
 };
 
+/// The experiment's name, a plain file name (results/NAME.json): the field "name" of `j`,
+/// validated (throws ccd::InputError naming `file`), else the stem of `file` with anything
+/// but letters, digits, '.', '_' and '-' made '_' (`fallback` when the stem is empty).
+std::string experiment_name(const nlohmann::json& j, const std::string& file, const std::string& fallback);
 /// Parses and validates an experiment (methods, dt > 0, repeats >= 1, no unknown field,
 /// ...); throws
 /// ccd::InputError naming `file` and the field. The dt <= horizon check needs the scene:
