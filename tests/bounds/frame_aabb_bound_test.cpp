@@ -12,22 +12,7 @@
 TEST_CASE("frame_aabb reports every touching pair of dyadic and random shapes", "[bounds][frame_aabb][zero_miss]") {
   const ccd::Vec3 offset = GENERATE(ccd::Vec3(0, 0, 0), ccd::Vec3(1048576, -1048576, 1048576));
   ccd::FrameAabbBound bound;
-  SECTION("dyadic pairs") {
-    ccd::test::RigidStep st(ccd::test::dyadic_pairs(offset));
-    const ccd::test::PairCheck c = ccd::test::check_pairs(bound, st);
-    CHECK(c.missed == 0);
-    CHECK(c.touching >= 50);
-    // Exact orientations make the box exact: a dyadic gap of 1/64 between the boxes is seen.
-    CHECK(c.rejected_apart >= 50);
-  }
-  SECTION("random pairs") {
-    std::mt19937_64 rng(31);
-    ccd::test::RigidStep st(ccd::test::random_pairs(rng, 4000, offset));
-    const ccd::test::PairCheck c = ccd::test::check_pairs(bound, st);
-    CHECK(c.missed == 0);
-    CHECK(c.touching >= 1000);
-    CHECK(c.rejected_apart >= 200);
-  }
+  ccd::test::check_every_touching_pair(bound, offset, 31);
 }
 
 TEST_CASE("frame_aabb's box lies inside the enclosing sphere's box", "[bounds][frame_aabb]") {

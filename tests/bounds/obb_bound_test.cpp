@@ -11,21 +11,7 @@
 TEST_CASE("obb reports every touching pair of dyadic and random shapes", "[bounds][obb][zero_miss]") {
   const ccd::Vec3 offset = GENERATE(ccd::Vec3(0, 0, 0), ccd::Vec3(1048576, -1048576, 1048576));
   ccd::ObbBound bound;
-  SECTION("dyadic pairs") {
-    ccd::test::RigidStep st(ccd::test::dyadic_pairs(offset));
-    const ccd::test::PairCheck c = ccd::test::check_pairs(bound, st);
-    CHECK(c.missed == 0);
-    CHECK(c.touching >= 50);
-    CHECK(c.rejected_apart >= 50);
-  }
-  SECTION("random pairs") {
-    std::mt19937_64 rng(41);
-    ccd::test::RigidStep st(ccd::test::random_pairs(rng, 4000, offset));
-    const ccd::test::PairCheck c = ccd::test::check_pairs(bound, st);
-    CHECK(c.missed == 0);
-    CHECK(c.touching >= 1000);
-    CHECK(c.rejected_apart >= 200);
-  }
+  ccd::test::check_every_touching_pair(bound, offset, 41);
 }
 
 TEST_CASE("obb is exact for crates", "[bounds][obb]") {

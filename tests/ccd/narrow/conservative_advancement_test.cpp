@@ -33,6 +33,18 @@ struct World {
     in.rigid = rigid.get();
     return ccd::narrow_table().find(scene.kind(0), scene.kind(1))(in, 0, 1);
   }
+  /// The first of the times k / 4096 in [0, 1] at which GJK certifies that bodies 0 and 1
+  /// overlap; -1 when none does.
+  double first_sampled_overlap() const {
+    for (int k = 0; k <= 4096; ++k) {
+      const double t = k / 4096.0;
+      const ccd::Pose pa = rigid->pose(0, t), pb = rigid->pose(1, t);
+      const ccd::ConvexDistance d =
+          ccd::convex_distance(rigid->proxy(0), {pa.centre, pa.rotation}, rigid->proxy(1), {pb.centre, pb.rotation});
+      if (d.status == ccd::ConvexDistance::Status::Overlapping) return t;
+    }
+    return -1.0;
+  }
 };
 
 // The spinning stick and resting ball of rigid_scenes.hpp, over 4 s.
@@ -196,14 +208,7 @@ TEST_CASE("the spin-axis bound: bodies turning about axes through their long sid
       w.scene.add_rigid_body(ball, ccd::RigidBody{});
       w.build();
       const ccd::ContactResult r = w.step(0.0, 1.0);
-      double first = -1.0;
-      for (int k = 0; k <= 4096 && first < 0.0; ++k) {
-        const double t = k / 4096.0;
-        const ccd::Pose pa = w.rigid->pose(0, t), pb = w.rigid->pose(1, t);
-        const ccd::ConvexDistance d = ccd::convex_distance(w.rigid->proxy(0), {pa.centre, pa.rotation},
-                                                           w.rigid->proxy(1), {pb.centre, pb.rotation});
-        if (d.status == ccd::ConvexDistance::Status::Overlapping) first = t;
-      }
+      const double first = w.first_sampled_overlap();
       if (first < 0.0) continue;
       ++hits;
       REQUIRE(r.found());
@@ -252,14 +257,7 @@ TEST_CASE("the relative bound: spinning sticks and boxes against moving balls an
       w.scene.add_rigid_body(b, small);
     }
     w.build();
-    double first = -1.0;
-    for (int k = 0; k <= 4096 && first < 0.0; ++k) {
-      const double t = k / 4096.0;
-      const ccd::Pose pa = w.rigid->pose(0, t), pb = w.rigid->pose(1, t);
-      const ccd::ConvexDistance d = ccd::convex_distance(w.rigid->proxy(0), {pa.centre, pa.rotation},
-                                                         w.rigid->proxy(1), {pb.centre, pb.rotation});
-      if (d.status == ccd::ConvexDistance::Status::Overlapping) first = t;
-    }
+    const double first = w.first_sampled_overlap();
     if (first <= 0.0) continue;
     ++hits;
     const ccd::ContactResult r = w.step(0.0, 1.0);

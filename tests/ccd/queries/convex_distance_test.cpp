@@ -23,6 +23,18 @@ void check_bracket(const ConvexDistance& d, double exact, double width) {
   CHECK(d.upper - d.lower <= width);
 }
 
+// A hull of 8 random points in [-1, 1] x [-0.5, 0.5] x [-0.25, 0.25], and a random rotation.
+ccd::Shape random_hull(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> pts;
+  for (int i = 0; i < 8; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 0.25 * u(rng));
+  return ccd::make_hull_shape(pts);
+}
+Eigen::Matrix3d random_rotation(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  return Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+}
+
 }  // namespace
 
 TEST_CASE("convex_distance brackets known distances", "[queries][gjk]") {
@@ -82,19 +94,11 @@ TEST_CASE("convex_distance brackets known distances", "[queries][gjk]") {
 TEST_CASE("convex_distance bounds hold on random hulls and poses", "[queries][gjk]") {
   std::mt19937_64 rng(1313);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  auto random_hull = [&] {
-    std::vector<Vec3> pts;
-    for (int i = 0; i < 8; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 0.25 * u(rng));
-    return ccd::make_hull_shape(pts);
-  };
-  auto random_rotation = [&] {
-    return Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
-  };
   int separated = 0, overlapping = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const ccd::Shape a = random_hull(), b = random_hull();
-    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation());
-    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 0.75, random_rotation());
+    const ccd::Shape a = random_hull(rng), b = random_hull(rng);
+    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation(rng));
+    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 0.75, random_rotation(rng));
     const ConvexDistance d = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb);
     REQUIRE(d.status != Status::Failed);
     REQUIRE(d.lower <= d.upper);
@@ -123,19 +127,11 @@ TEST_CASE("convex_distance: a warm start changes no certificate, and the gap alo
           "[queries][gjk]") {
   std::mt19937_64 rng(2626);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  auto random_hull = [&] {
-    std::vector<Vec3> pts;
-    for (int i = 0; i < 8; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 0.25 * u(rng));
-    return ccd::make_hull_shape(pts);
-  };
-  auto random_rotation = [&] {
-    return Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
-  };
   int separated = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    const ccd::Shape a = random_hull(), b = random_hull();
-    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation());
-    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 1.5, random_rotation());
+    const ccd::Shape a = random_hull(rng), b = random_hull(rng);
+    const ProxyPose pa = at(Vec3(u(rng), u(rng), u(rng)), random_rotation(rng));
+    const ProxyPose pb = at(Vec3(u(rng), u(rng), u(rng)) * 1.5, random_rotation(rng));
     const ConvexDistance cold = ccd::convex_distance(a.proxy(), pa, b.proxy(), pb);
     ccd::DistanceOptions o;
     o.start_direction = Vec3(u(rng), u(rng), u(rng));  // any guess, good or bad
