@@ -155,7 +155,7 @@ TEST_CASE("certified proximity agrees with the exact reference on random near co
 #ifdef CCDLAB_SANITIZED
   const int n = 4;
 #else
-  const int n = 15;
+  const int n = 10;
 #endif
   for (PrimitivePair kind : {PrimitivePair::VertexFace, PrimitivePair::EdgeEdge}) {
     Tally t;
