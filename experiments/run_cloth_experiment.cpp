@@ -256,6 +256,10 @@ json run_cloth_experiment(const ClothExperiment& e, const ccd::cloth::ClothScene
                   {"events", m.events.size()},
                   {"step_contacts", step_contacts},
                   {"seconds", m.truth_seconds},
+                  {"pairs", m.truth.counts.pairs},
+                  {"certified_within", m.truth.counts.within},
+                  {"certified_apart", m.truth.counts.apart},
+                  {"exact_pairs", m.truth.counts.exact},
                   {"file", m.truth_file.empty() ? json(nullptr) : json(m.truth_file)},
                   {"reused", m.truth_reused}};
   out["environment"] = environment_json(options.threads);

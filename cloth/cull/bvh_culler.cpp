@@ -14,9 +14,11 @@ std::vector<Candidate> BvhCuller::cull_active(const ClothMesh& mesh, std::span<c
                                               std::span<const std::uint8_t> active) {
   if (x0.size() != x1.size()) throw std::invalid_argument("bvh culler: x0 and x1 differ in size");
   rebuilt_ = false;
-  if (!tree_ || tree_->vertex_count() != x0.size() || mesh_.triangles != mesh.triangles || mesh_.edges != mesh.edges) {
+  if (!tree_ || tree_->vertex_count() != x0.size() || mesh_.triangles != mesh.triangles || mesh_.edges != mesh.edges ||
+      mesh_.chart != mesh.chart) {
     mesh_.triangles = mesh.triangles;
     mesh_.edges = mesh.edges;
+    mesh_.chart = mesh.chart;
     tree_ = std::make_unique<TriangleBvh>(mesh_, x0);
     rebuilt_ = true;
   }
@@ -31,7 +33,7 @@ std::vector<Candidate> BvhCuller::cull_active(const ClothMesh& mesh, std::span<c
 }
 
 std::vector<CullerCounter> BvhCuller::counters() const {
-  return {{"rebuilt", rebuilt_ ? 1u : 0u}, {"node_pairs", stats_.node_pairs}, {"cone_culled", stats_.cone_culled}};
+  return {{"rebuilt", rebuilt_ ? 1u : 0u}, {"node_pairs", stats_.node_pairs}, {"cone_culled", stats_.cone_culled}, {"cone_rejected", stats_.cone_rejected}};
 }
 
 }  // namespace ccd::cloth

@@ -33,6 +33,27 @@ TriangleBvh::TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x) : mesh_
     }
   for (std::uint32_t v = 0; v < vertex_owner_.size(); ++v)
     if (vertex_owner_[v] == none) orphans_.push_back(v);
+  // The chart's smallest altitude (2 area / edge length), rounded down by a relative 1e-12
+  // (far above the dozen roundings of each altitude). A triangle that is not positively
+  // oriented, or is a sliver whose area is not well above its rounding error, voids the chart.
+  if (!mesh.chart.empty() && mesh.chart.size() == x.size() && !mesh.triangles.empty()) {
+    double gap = std::numeric_limits<double>::infinity();
+    for (const auto& t : mesh.triangles) {
+      const auto& p0 = mesh.chart[t[0]];
+      const auto& p1 = mesh.chart[t[1]];
+      const auto& p2 = mesh.chart[t[2]];
+      const double e[3][2] = {{p1[0] - p0[0], p1[1] - p0[1]}, {p2[0] - p1[0], p2[1] - p1[1]}, {p0[0] - p2[0], p0[1] - p2[1]}};
+      const double area2 = e[0][0] * (p2[1] - p0[1]) - e[0][1] * (p2[0] - p0[0]);
+      double longest = 0;
+      for (const auto& d : e) longest = std::max(longest, std::hypot(d[0], d[1]));
+      if (!(area2 > 1e-6 * longest * longest) || !std::isfinite(area2)) {
+        gap = 0;
+        break;
+      }
+      gap = std::min(gap, area2 / longest);  // the smallest altitude is on the longest edge
+    }
+    chart_gap_ = gap * (1 - 1e-12);
+  }
   rebuild(x);
 }
 
@@ -43,11 +64,14 @@ void TriangleBvh::rebuild(std::span<const Vec3> x) {
   for (std::uint32_t t = 0; t < tris.size(); ++t) tris[t] = t;
   nodes_.reserve(2 * tris.size());
   if (!tris.empty()) root_ = build(tris, 0, tris.size(), x);
+  order_ = std::move(tris);
 }
 
 int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x) {
   const int id = static_cast<int>(nodes_.size());
   nodes_.push_back(Node{});
+  nodes_[static_cast<std::size_t>(id)].begin = static_cast<std::uint32_t>(begin);
+  nodes_[static_cast<std::size_t>(id)].end = static_cast<std::uint32_t>(end);
   if (end - begin == 1) {
     nodes_[static_cast<std::size_t>(id)].triangle = static_cast<int>(tris[begin]);
     return id;
@@ -78,6 +102,9 @@ int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std:
 
 void TriangleBvh::refit(std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate) {
   vertex_boxes(x0, x1, inflate, vertex_boxes_);
+  separation_ = 2 * inflate;
+  x0_.assign(x0.begin(), x0.end());
+  x1_.assign(x1.begin(), x1.end());
   if (root_ >= 0) refit_node(root_, x0, x1);
 }
 
@@ -101,6 +128,21 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     const Aabb box = triangle_box(vertex_boxes_, v);
     node.lo = box.lo;
     node.hi = box.hi;
+    if (chart_gap_ > 0) {
+      node.count = 3;
+      node.su.setZero();
+      node.suu.setZero();
+      node.sx.setZero();
+      node.sxu.setZero();
+      for (std::uint32_t vi : v) {
+        const Eigen::Vector2d u(mesh_->chart[vi][0], mesh_->chart[vi][1]);
+        const Vec3 xm = 0.5 * (x0[vi] + x1[vi]);
+        node.su += u;
+        node.suu += u * u.transpose();
+        node.sx += xm;
+        node.sxu += xm * u.transpose();
+      }
+    }
     // Bernstein coefficients of the normal over the interval.
     const Vec3 a0 = x0[v[1]] - x0[v[0]], b0 = x0[v[2]] - x0[v[0]];
     const Vec3 a1 = x1[v[1]] - x1[v[0]], b1 = x1[v[2]] - x1[v[0]];
@@ -123,8 +165,8 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
       return;
     }
     node.axis = sum / sum_len;
-    // One arc cosine per leaf (the cone's accuracy only steers culling: bvh_cones is not
-    // claimed conservative).
+    // One arc cosine per leaf (the cone only steers culling: the flatness certificate is
+    // the proof).
     const double lowest = std::min({node.axis.dot(unit[0]), node.axis.dot(unit[1]), node.axis.dot(unit[2])});
     node.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
@@ -135,6 +177,11 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
   node.hi = l.hi.cwiseMax(r.hi);
+  node.count = l.count + r.count;
+  node.su = l.su + r.su;
+  node.suu = l.suu + r.suu;
+  node.sx = l.sx + r.sx;
+  node.sxu = l.sxu + r.sxu;
   const Vec3 sum = l.axis + r.axis;
   if (l.half_angle >= kAnyDirection || r.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
     node.axis = l.axis;
@@ -181,12 +228,63 @@ void TriangleBvh::self(int n, Traversal& tr) const {
   if (node.triangle >= 0) return;  // a triangle's own primitives are all adjacent
   if (!tr.node_active.empty() && !tr.node_active[static_cast<std::size_t>(n)]) return;
   if (tr.cones && node.half_angle < std::numbers::pi / 2) {
-    ++tr.stats.cone_culled;
-    return;
+    if (proved_apart(node)) {
+      ++tr.stats.cone_culled;
+      return;
+    }
+    ++tr.stats.cone_rejected;
   }
   self(node.left, tr);
   self(node.right, tr);
   pair(node.left, node.right, tr);
+}
+
+bool TriangleBvh::proved_apart(const Node& node) const {
+  if (!(chart_gap_ > 0) || node.count < 3) return false;
+  // The affine fit P x ~ B u + c (least squares over the corners, mid-interval). Any B and c
+  // give a valid certificate; the fit only makes it likely to succeed.
+  const double n = node.count;
+  const Eigen::Vector2d ubar = node.su / n;
+  const Vec3 xbar = node.sx / n;
+  const Eigen::Matrix2d cuu = node.suu / n - ubar * ubar.transpose();
+  const Eigen::Matrix<double, 3, 2> cxu = node.sxu / n - xbar * ubar.transpose();
+  const double det_uu = cuu.determinant();
+  if (!(det_uu > 1e-12 * cuu.squaredNorm())) return false;
+  // P: an orthonormal basis of the plane normal to the cone's axis.
+  const Vec3 a = node.axis;
+  Vec3 e1 = std::abs(a.x()) < 0.9 ? Vec3::UnitX().cross(a) : Vec3::UnitY().cross(a);
+  e1.normalize();
+  const Vec3 e2 = a.cross(e1).normalized();
+  Eigen::Matrix<double, 2, 3> P;
+  P.row(0) = e1.transpose();
+  P.row(1) = e2.transpose();
+  const Eigen::Matrix2d B = P * cxu * cuu.inverse();
+  const Eigen::Vector2d c = P * xbar - B * ubar;
+  // sigma_min(B) = |det B| / sigma_max(B), sigma_max^2 = (F + sqrt(F^2 - 4 det^2)) / 2 with
+  // F = |B|_F^2: sigma_max rounded up and the quotient down by a relative 1e-12 (far above
+  // the dozen roundings).
+  const double det = B.determinant(), f = B.squaredNorm();
+  const double sigma_max = std::sqrt(0.5 * (f + std::sqrt(std::max(0.0, f * f - 4 * det * det)))) * (1 + 1e-12);
+  const double sigma = std::abs(det) / sigma_max * (1 - 1e-12);
+  if (!(sigma > 0) || !std::isfinite(sigma)) return false;
+  const double budget = 0.5 * (sigma * chart_gap_ * (1 - 1e-12) - separation_ * (1 + 1e-12));
+  if (!(budget > 0)) return false;
+  // Residuals at both ends of the interval. A residual component is a dot product of 3 and
+  // of 2 terms and one more subtraction: its rounding error is below 8 u times the sum of
+  // the terms' magnitudes (u = 2^-53); 1e-13 times that sum is used.
+  const double bmax = B.cwiseAbs().maxCoeff(), cmax = c.cwiseAbs().maxCoeff();
+  for (std::uint32_t i = node.begin; i < node.end; ++i)
+    for (std::uint32_t v : mesh_->triangles[order_[i]]) {
+      const Eigen::Vector2d u(mesh_->chart[v][0], mesh_->chart[v][1]);
+      const Eigen::Vector2d bu = B * u + c;
+      const double umag = bmax * (std::abs(u.x()) + std::abs(u.y())) + cmax;
+      for (const Vec3* x : {&x0_[v], &x1_[v]}) {
+        const Eigen::Vector2d r = P * *x - bu;
+        const double err = 1e-13 * (x->cwiseAbs().sum() + umag);
+        if (r.norm() * (1 + 1e-15) + 2 * err > budget) return false;
+      }
+    }
+  return true;
 }
 
 void TriangleBvh::pair(int a, int b, Traversal& tr) const {

@@ -20,14 +20,23 @@
 // Normal cones: under linear motion a triangle's normal n(t) = e1(t) x e2(t) is a
 // quadratic with Bernstein coefficients n(0), (e1(0) x e2(1) + e1(1) x e2(0)) / 2 and
 // n(1). Every n(t) is a non-negative combination of them, so a cone holding the three
-// holds the normal over the whole interval. A node's cone holds its children's. When a
-// node's cone has a half-angle below pi/2, every normal of its patch is on one side of
-// the axis, and the node is not tested against itself. A patch that faces one way cannot
-// fold onto itself, provided its boundary, projected along the axis, does not cross
-// itself. That contour test is not done here, so `bvh_cones` may drop true contacts.
-// Its tests check, on the cloth scenes, that every dropped pair is contact-free.
+// holds the normal over the whole interval. A node's cone holds its children's.
+//
+// With cones, a node whose cone has a half-angle below pi/2 is not tested against itself
+// only when its patch is also proved free of self-proximity over the interval: no two
+// non-adjacent primitives of the patch come within the separation d (a flatness
+// certificate; the proof is in docs/cloth.md#normal-cones). It needs the mesh's chart
+// (ClothMesh::chart): with u_v a vertex's chart coordinates and g the smallest altitude of
+// the chart's triangles, P the projection onto the plane normal to the cone's axis and
+// (B, c) an affine fit of P x over the patch, if every vertex of the patch has
+// |P x_v - B u_v - c| <= delta at both ends of the interval and sigma_min(B) g - 2 delta > d,
+// then non-adjacent primitives of the patch stay more than d apart over the whole
+// interval. Without a chart no node is skipped. So `bvh_cones` is conservative: it returns
+// the pairs of `bvh` minus pairs proved to stay more than d apart.
 #include <cloth/cull/candidate.hpp>
 #include <ccd/geometry/aabb.hpp>
+
+#include <Eigen/Core>
 
 #include <span>
 #include <vector>
@@ -37,7 +46,8 @@ namespace ccd::cloth {
 struct BvhStats {
   std::size_t node_pairs = 0;    ///< box pairs tested
   std::size_t leaf_pairs = 0;    ///< overlapping triangle pairs
-  std::size_t cone_culled = 0;   ///< nodes not tested against themselves thanks to their cone
+  std::size_t cone_culled = 0;   ///< nodes not tested against themselves (narrow cone and certified)
+  std::size_t cone_rejected = 0; ///< nodes with a narrow cone whose certificate failed
 };
 
 class TriangleBvh {
@@ -67,7 +77,16 @@ class TriangleBvh {
     double half_angle = 0;  // radians; >= pi means "any direction"
     int left = -1, right = -1;
     int triangle = -1;      // leaf
+    std::uint32_t begin = 0, end = 0;  // its triangles: order_[begin, end)
+    // Moments of (chart u, mid-interval position x) over its triangles' corners (affine fit).
+    double count = 0;
+    Eigen::Vector2d su = Eigen::Vector2d::Zero();
+    Eigen::Matrix2d suu = Eigen::Matrix2d::Zero();
+    Vec3 sx = Vec3::Zero();
+    Eigen::Matrix<double, 3, 2> sxu = Eigen::Matrix<double, 3, 2>::Zero();
   };
+  /// The flatness certificate of a node (see the header comment) for the last refit.
+  bool proved_apart(const Node& node) const;
   int build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x);
   void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1);
   struct Traversal {
@@ -89,7 +108,11 @@ class TriangleBvh {
   std::vector<std::uint32_t> orphans_;                    // vertices on no triangle
   std::vector<Aabb> vertex_boxes_;                        // after refit: inflated swept boxes
   std::vector<Node> nodes_;
+  std::vector<std::uint32_t> order_;  // triangles in leaf order
   int root_ = -1;
+  double chart_gap_ = 0;              // lower bound of the chart's smallest altitude; 0: no chart
+  double separation_ = 0;             // of the last refit
+  std::vector<Vec3> x0_, x1_;         // the last refit's states
 };
 
 }  // namespace ccd::cloth

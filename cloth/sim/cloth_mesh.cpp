@@ -38,6 +38,9 @@ ClothMesh make_grid_mesh(const ClothScene& s) {
     }
   std::sort(m.edges.begin(), m.edges.end());
   m.edges.erase(std::unique(m.edges.begin(), m.edges.end()), m.edges.end());
+  m.chart.resize(x.size());
+  for (int j = 0; j < s.ny; ++j)
+    for (int i = 0; i < s.nx; ++i) m.chart[s.particle(i, j)] = {double(i), double(j)};
   return m;
 }
 

@@ -23,6 +23,11 @@ struct ClothMesh {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   std::vector<std::array<std::uint32_t, 2>> edges;  ///< each mesh edge once (a < b)
   std::vector<Spring> springs;
+  /// Optional: planar coordinates of each vertex in which the triangles form an embedded,
+  /// positively oriented triangulation of a convex region (a grid cloth: the indices (i, j)).
+  /// Empty when unknown. The `bvh_cones` culler needs it to skip a self-test
+  /// (cloth/cull/triangle_bvh.hpp).
+  std::vector<std::array<double, 2>> chart;
 };
 
 /// The particles' initial positions, in index order i + nx j.

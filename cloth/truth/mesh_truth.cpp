@@ -1,6 +1,6 @@
 #include "mesh_truth.hpp"
 
-#include <cloth/ccd/triangle_ccd.hpp>
+#include <cloth/ccd/certified_proximity.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 #include <ccd/util/parallel_for.hpp>
 
@@ -39,15 +39,20 @@ bool within(double lo_a, double hi_a, double lo_b, double hi_b, double d) {
 }  // namespace
 
 bool exact_pair_contact(const ClothMesh& mesh, const Candidate& c, std::span<const Vec3> x0, std::span<const Vec3> x1,
-                        double thickness) {
+                        double thickness, MeshTruthCounts* counts) {
+  MeshTruthCounts local;
+  MeshTruthCounts& n = counts ? *counts : local;
+  ++n.pairs;
   const LinearQuery q = candidate_query(mesh, c, x0, x1);
-  TriangleCcdOptions options;
-  options.separation = thickness;
-  if (triangle_ccd(c.kind, q, options).status == QueryStatus::Miss) return false;  // a proof
+  switch (certified_proximity(c.kind, q, thickness).decision) {  // Within and Apart are proofs
+    case Proximity::Within: ++n.within; return true;
+    case Proximity::Apart: ++n.apart; return false;
+    case Proximity::Undecided: break;
+  }
+  ++n.exact;
   const mpq_class d(thickness);
   const mpq_class d2 = d * d;
-  // A contact at t = 0 or t = 1 is decided by a still query (constant polynomials: cheap);
-  // most contacts of a cloth (resting, or lasting several steps) are found so.
+  // A contact at t = 0 or t = 1 is decided by a still query (constant polynomials: cheap).
   const RationalQuery exact = to_rational(q);
   for (int end : {0, 4}) {
     RationalQuery still = exact;
@@ -58,16 +63,17 @@ bool exact_pair_contact(const ClothMesh& mesh, const Candidate& c, std::span<con
 }
 
 std::vector<Candidate> contacts_among(const ClothMesh& mesh, std::span<const Candidate> candidates,
-                                      std::span<const Vec3> x0, std::span<const Vec3> x1, double thickness) {
+                                      std::span<const Vec3> x0, std::span<const Vec3> x1, double thickness,
+                                      MeshTruthCounts* counts) {
   std::vector<Candidate> out;
   for (const Candidate& c : candidates)
-    if (exact_pair_contact(mesh, c, x0, x1, thickness)) out.push_back(c);
+    if (exact_pair_contact(mesh, c, x0, x1, thickness, counts)) out.push_back(c);
   std::sort(out.begin(), out.end());
   return out;
 }
 
 std::vector<Candidate> interval_contacts(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1,
-                                         double thickness) {
+                                         double thickness, MeshTruthCounts* counts) {
   std::vector<Item> items;
   items.reserve(x0.size() + mesh.edges.size() + mesh.triangles.size());
   for (std::uint32_t v = 0; v < x0.size(); ++v) items.push_back(box_of(std::array<std::uint32_t, 1>{v}, x0, x1, v, 0));
@@ -93,7 +99,7 @@ std::vector<Candidate> interval_contacts(const ClothMesh& mesh, std::span<const 
       candidates.push_back(c);
     }
   }
-  return contacts_among(mesh, candidates, x0, x1, thickness);
+  return contacts_among(mesh, candidates, x0, x1, thickness, counts);
 }
 
 MeshTruth compute_mesh_truth(const ClothMesh& mesh, std::span<const std::vector<Vec3>> frames, double thickness,
@@ -104,16 +110,19 @@ MeshTruth compute_mesh_truth(const ClothMesh& mesh, std::span<const std::vector<
   const std::size_t steps = frames.size() - 1;
   truth.step_contacts.resize(steps);
   truth.state_contacts.resize(frames.size());
+  std::vector<MeshTruthCounts> step_counts(steps), state_counts(frames.size());
   parallel_for(steps, threads, [&](std::size_t s, unsigned) {
     if (cancelled()) return;
-    truth.step_contacts[s] = interval_contacts(mesh, frames[s], frames[s + 1], thickness);
+    truth.step_contacts[s] = interval_contacts(mesh, frames[s], frames[s + 1], thickness, &step_counts[s]);
   });
   // A contact of state s is a contact of each step that contains it (s - 1 and s).
   parallel_for(frames.size(), threads, [&](std::size_t s, unsigned) {
     if (cancelled()) return;
     const auto& superset = truth.step_contacts[s < steps ? s : s - 1];
-    truth.state_contacts[s] = contacts_among(mesh, superset, frames[s], frames[s], thickness);
+    truth.state_contacts[s] = contacts_among(mesh, superset, frames[s], frames[s], thickness, &state_counts[s]);
   });
+  for (const MeshTruthCounts& c : step_counts) truth.counts += c;
+  for (const MeshTruthCounts& c : state_counts) truth.counts += c;
   return truth;
 }
 

@@ -2,9 +2,9 @@
 // brute-force pairs, and every brute-force pair a culler drops is proved contact-free
 // over the check interval (the proof of a culler that may drop pairs, and a check of the
 // others). The proof is the conservative kernel's Miss (a certified result: its rounding
-// is bounded) or, when the kernel reports a possible contact, the exact rational CCD at
-// separation 0. bvh_cones ignores the separation (a patch facing one way may still come
-// within it of itself): at separation > 0 it may drop pairs, which is allowed here.
+// is bounded) or, when the kernel reports a possible contact, the exact rational CCD: at
+// the separation for the conservative cullers (bvh_cones included), at separation 0 for
+// sensors (it is not claimed conservative at a separation).
 #include <cloth/cull/cullers.hpp>
 #include <cloth/cull/triangle_bvh.hpp>
 #include <cloth/cull/bvh_culler.hpp>
@@ -65,12 +65,11 @@ TEST_CASE("cullers drop only pairs that are proved contact-free", "[cloth][cull]
           for (std::size_t i = 0; i < all.size(); ++i) {
             if (!possible[i] || std::binary_search(got.begin(), got.end(), all[i])) continue;
             INFO("dropped " << to_string(all[i].kind) << " " << all[i].a << " " << all[i].b);
-            // A culler proved conservative never drops a pair the kernel cannot exclude.
-            CHECK(c.may_drop);
-            // bvh_cones: each such pair must be contact-free, decided exactly (at separation 0,
-            // where the exact reference only visits the roots of the coplanarity cubic).
-            if (c.may_drop && separation == 0)
-              CHECK_FALSE(exact_contact(all[i].kind, to_rational(candidate_query(mesh, all[i], x0, x1)), 0));
+            // Each such pair must be contact-free, decided exactly: at the separation for a
+            // conservative culler, at separation 0 for sensors.
+            const mpq_class d(separation);
+            if (!c.may_drop || separation == 0)
+              CHECK_FALSE(exact_contact(all[i].kind, to_rational(candidate_query(mesh, all[i], x0, x1)), d * d));
           }
         }
       }
@@ -109,7 +108,11 @@ TEST_CASE("the box cullers and bvh keep exactly the pairs whose primitive boxes 
       for (const CullerEntry& c : cullers()) {
         if (c.name == "brute" || c.may_drop) continue;
         INFO(c.name << (continuous ? " continuous" : " discrete") << ", separation " << separation);
-        CHECK(c.cull(mesh, x0, x1, separation) == reference);
+        const std::vector<Candidate> got = c.cull(mesh, x0, x1, separation);
+        if (c.name == "bvh_cones")  // a subset: it skips self-tests of patches proved flat
+          CHECK(std::includes(reference.begin(), reference.end(), got.begin(), got.end()));
+        else
+          CHECK(got == reference);
       }
     }
 }
@@ -117,8 +120,8 @@ TEST_CASE("the box cullers and bvh keep exactly the pairs whose primitive boxes 
 TEST_CASE("cullers that keep state between intervals give what a fresh instance gives", "[cloth][cull]") {
   // The refitted (and, when its quality degrades, rebuilt) hierarchy and the broad phases
   // kept between frames: over every step interval of a run, the conservative cullers match
-  // a fresh instance exactly; bvh_cones' dropped pairs are proved contact-free at
-  // separation 0.
+  // a fresh instance exactly; the pairs bvh_cones (whose output depends on the topology)
+  // and sensors drop are proved contact-free at separation 0.
   ClothScene s = builtin_cloth_scene("pile", 6);
   s.steps = 300;
   const auto frames = simulate_cloth(s);
@@ -133,7 +136,7 @@ TEST_CASE("cullers that keep state between intervals give what a fresh instance 
       const std::vector<Candidate> got = kept->cull(mesh, frames[k], frames[k + 1], separation);
       for (const CullerCounter& counter : kept->counters())
         if (counter.name == "rebuilt") rebuilds += counter.value;
-      if (!c.may_drop) {
+      if (!c.may_drop && c.name != "bvh_cones") {
         CHECK(got == c.cull(mesh, frames[k], frames[k + 1], separation));
         continue;
       }
@@ -167,7 +170,8 @@ TEST_CASE("culler names: every broad phase behind boxes:, options, unknown names
   CHECK(find_culler("boxes:grid:size=1") == nullptr);
   CHECK(find_culler("boxes:") == nullptr);
   CHECK(find_culler("nope") == nullptr);
-  CHECK(find_culler("bvh_cones")->may_drop);
+  CHECK_FALSE(find_culler("bvh_cones")->may_drop);
+  CHECK(find_culler("sensors")->may_drop);
 }
 
 TEST_CASE("the bvh is rebuilt when refitting degrades it, and only then", "[cloth][cull]") {

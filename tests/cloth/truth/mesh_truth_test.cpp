@@ -111,6 +111,19 @@ TEST_CASE("mesh truth: distance exactly the thickness is a contact, 2^-30 less i
     const MeshTruth below = compute_mesh_truth(mesh, frames, 0.125 - 0x1p-30);
     for (const auto& s : below.step_contacts) CHECK(s.empty());
     for (const auto& s : below.state_contacts) CHECK(s.empty());
+    // How the pairs were decided: a touch at exactly the thickness is beyond any
+    // floating-point proof, so it reaches the exact reference (2^-30 apart, the gap is
+    // along z: the box filter skips the pair).
+    for (const MeshTruth* t : {&at, &below})
+      CHECK(t->counts.pairs == t->counts.within + t->counts.apart + t->counts.exact);
+    CHECK(at.counts.exact > 0);
+    CHECK(at.counts.within == 0);
+    CHECK(below.counts.exact == 0);
+    // 2^-10 nearer than the thickness: proved within, no exact reference.
+    const MeshTruth within = compute_mesh_truth(mesh, frames, 0.125 + 0x1p-10);
+    for (const auto& s : within.step_contacts) CHECK(s == std::vector<Candidate>{kVertexFace});
+    CHECK(within.counts.within > 0);
+    CHECK(within.counts.exact == 0);
   }
 }
 
