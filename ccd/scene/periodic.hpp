@@ -18,11 +18,16 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 namespace ccd {
 
 /// Image shift in periods per axis (0 on reflecting axes).
 using ImageShift = std::array<std::int32_t, 3>;
+
+/// Most periods one box may span on an axis (PeriodicBox::image_range).
+inline constexpr int kMaxImageSpan = 1024;
 
 struct PeriodicBox {
   std::array<bool, 3> wrap{false, false, false};
@@ -66,6 +71,11 @@ struct PeriodicBox {
     const double slack = 0x1p-20 * L;
     const double lo = std::ceil((min[k] - slack - box.hi[k]) / L);
     const double hi = std::floor((max[k] + slack - box.lo[k]) / L);
+    // A box over more than kMaxImageSpan periods (a body crossing the box that often in one
+    // step) is refused rather than enumerated (or cast out of the int range).
+    if (!(hi - lo <= kMaxImageSpan))
+      throw std::length_error("a body's box spans more than " + std::to_string(kMaxImageSpan) +
+                              " periods of the wrapped box on axis " + std::to_string(k) + " in one step (use a smaller dt)");
     return {static_cast<std::int32_t>(std::min(lo, 0.0)), static_cast<std::int32_t>(std::max(hi, 0.0))};
   }
   /// Calls f(shift) for every image of `box` that meets the cell [min, max] on every
