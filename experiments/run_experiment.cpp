@@ -2,6 +2,7 @@
 
 #include "environment.hpp"
 #include "generators/registry.hpp"
+#include "method.hpp"
 #include "progress.hpp"
 #include "runner.hpp"
 
@@ -27,7 +28,9 @@ namespace ccdlab {
 
 using nlohmann::json;
 
-ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
+namespace {
+
+ccd::Scene read_experiment_scene(const Experiment& e, const std::string& file) {
   if (!e.scene_path.empty()) return ccd::load_scene(e.scene_path);
   json params = e.scene_generator;
   const std::string name = params["generator"].get<std::string>();
@@ -37,6 +40,21 @@ ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
   } catch (const std::invalid_argument& err) {
     throw ccd::InputError(file, "scene", err.what());
   }
+}
+
+}  // namespace
+
+ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
+  ccd::Scene scene = read_experiment_scene(e, file);
+  // The earliest-contact scheduler refreshes bodies one by one over windows of their own;
+  // it has no image layer (ccd/pipeline/periodic_images.hpp), so it refuses wrapped scenes.
+  if (scene.wraps())
+    for (std::size_t i = 0; i < e.methods.size(); ++i)
+      if (parse_method(e.methods[i]).scheduled())
+        throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
+                              "@earliest does not support a scene that wraps around (box.boundary \"wrap\"); "
+                              "use the fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
+  return scene;
 }
 
 namespace {

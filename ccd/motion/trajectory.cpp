@@ -101,7 +101,7 @@ Dd refine_wall_time(const State& st, int k, const Dd& wall, double s0) {
 }  // namespace
 
 Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
-    : horizon_(scene.horizon) {
+    : horizon_(scene.horizon), periodic_(PeriodicBox::of(scene)) {
   const std::size_t n = scene.bodies.size();
   radius_.reserve(n);
   first_.reserve(n + 1);
@@ -116,6 +116,11 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
     Vec3 rest_height = Vec3::Zero();
     if (scene.box) {
       for (int k = 0; k < 3; ++k) {
+        if (scene.box->wraps(k)) {  // the faces themselves: the centre crossing one wraps
+          lo_wall[k] = Dd(scene.box->min[k]);
+          hi_wall[k] = Dd(scene.box->max[k]);
+          continue;
+        }
         lo_wall[k] = two_sum(scene.box->min[k], b.radius);
         hi_wall[k] = two_sum(scene.box->max[k], -b.radius);
         rest_height[k] = kRestFraction * (scene.box->max[k] - scene.box->min[k]);
@@ -142,6 +147,14 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
         for (int k = 0; k < 3; ++k) {
           const double ak = a[k].value();
           const double vk = st.v[k].value();
+          if (scene.box->wraps(k)) {
+            // On or beyond a face while moving (or, at rest, accelerating) out through it:
+            // re-enter at the opposite face at once.
+            const double above = (st.p[k] - hi_wall[k]).value(), below = (st.p[k] - lo_wall[k]).value();
+            if (above >= 0.0 && (vk > 0.0 || (vk == 0.0 && ak > 0.0))) st.p[k] = st.p[k] - periodic_->shift(k, 1);
+            else if (below <= 0.0 && (vk < 0.0 || (vk == 0.0 && ak < 0.0))) st.p[k] = st.p[k] + periodic_->shift(k, 1);
+            continue;
+          }
           // Resting rule: pushed into a wall and unable to rise more than rest_height.
           for (int dir : {-1, +1}) {
             const Dd& wall = dir < 0 ? lo_wall[k] : hi_wall[k];
@@ -203,7 +216,11 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
         pos_error += vel_error * S + 64.0 * kU2 * (pmag + vmag * S);
         vel_error += 64.0 * kU2 * vmag;
       }
-      if (wall_axis >= 0) {
+      if (wall_axis >= 0 && scene.box->wraps(wall_axis)) {
+        // Wrap: the same motion, its position moved by one period (exact); no model error.
+        const int k = wall_axis;
+        next.p[k] = wall_dir > 0 ? next.p[k] - periodic_->shift(k, 1) : next.p[k] + periodic_->shift(k, 1);
+      } else if (wall_axis >= 0) {
         // The branch after the reflection, extrapolated from t* back to the double t_next.
         const int k = wall_axis;
         const Dd& wall = wall_dir > 0 ? hi_wall[k] : lo_wall[k];
@@ -228,6 +245,42 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
     }
     first_.push_back(static_cast<std::uint32_t>(pieces_.size()));
   }
+}
+
+void shift_piece(Piece& q, PieceLow& low, const DdVec3& shift) {
+  for (int k = 0; k < 3; ++k) {
+    const Dd p = Dd(q.p[k], low.p[k]) + shift[k];
+    q.p[k] = p.hi;
+    low.p[k] = p.lo;
+  }
+}
+
+DdVec3 image_offset(const PeriodicBox& box, const ImageShift& s) {
+  DdVec3 r;
+  for (int k = 0; k < 3; ++k) r[k] = box.shift(k, s[static_cast<std::size_t>(k)]);
+  return r;
+}
+
+void Trajectories::reset(double horizon, const std::optional<PeriodicBox>& periodic) {
+  horizon_ = horizon;
+  periodic_ = periodic;
+  radius_.clear();
+  pieces_.clear();
+  lows_.clear();
+  first_.assign(1, 0);
+}
+
+void Trajectories::append_body(double radius, std::span<const Piece> pieces, std::span<const PieceLow> lows,
+                               std::span<const DdVec3> shifts) {
+  radius_.push_back(radius);
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    Piece q = pieces[j];
+    PieceLow l = lows[j];
+    shift_piece(q, l, shifts[j]);
+    pieces_.push_back(q);
+    lows_.push_back(l);
+  }
+  first_.push_back(static_cast<std::uint32_t>(pieces_.size()));
 }
 
 std::size_t Trajectories::piece_index(std::size_t body, double t) const {

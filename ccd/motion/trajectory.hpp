@@ -25,13 +25,21 @@
 // window |t* - t_r| and the position error 2 |v_n| |t* - t_r| inside it, and the
 // rounding of the double-double operations carried from break to break (about
 // 32 u^2 of the magnitudes per break, u = 2^-53).
+// Wrapped axes (ccd/scene/periodic.hpp): a piece also ends when the centre reaches a face
+// (min or max itself, not min + r) while moving out through it; the next piece starts at
+// the opposite face with the same velocity and acceleration (position moved by one exact
+// period, so no model error). A centre that starts on or beyond a face moving (or, at
+// rest, accelerating) out through it re-enters at once. Positions therefore stay in
+// [min, max] on wrapped axes, up to the rounding of the piece's end time.
 // Limits: at most `max_pieces_per_body` pieces per body (a body that would need more
 // throws TooManyPieces naming it: a ball bouncing ever faster).
 #include <ccd/geometry/aabb.hpp>
 #include <ccd/geometry/double_double.hpp>
+#include <ccd/scene/periodic.hpp>
 #include <ccd/scene/scene.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -89,6 +97,12 @@ struct PieceLow {
 DdVec3 exact_position(const Piece& q, const PieceLow& low, double t);
 DdVec3 exact_velocity(const Piece& q, const PieceLow& low, double t);
 
+/// Moves piece q (with its trailing parts) by `shift`, exactly in double-double: a
+/// periodic image of the piece.
+void shift_piece(Piece& q, PieceLow& low, const DdVec3& shift);
+/// The exact shift of image `s` as double-doubles.
+DdVec3 image_offset(const PeriodicBox& box, const ImageShift& s);
+
 struct TrajectoryOptions {
   static constexpr std::size_t default_max_pieces_per_body = 1000000;
   std::size_t max_pieces_per_body = default_max_pieces_per_body;
@@ -117,11 +131,20 @@ class Trajectories {
   const Piece& piece_at(std::size_t body, double t) const;
   Vec3 position(std::size_t body, double t) const { return piece_at(body, t).position(t); }
   Vec3 velocity(std::size_t body, double t) const { return piece_at(body, t).velocity(t); }
+  /// The box's periodic axes; null when no axis wraps.
+  const PeriodicBox* periodic() const { return periodic_ ? &*periodic_ : nullptr; }
+  /// Empties the set (for append_body), keeping its buffers.
+  void reset(double horizon, const std::optional<PeriodicBox>& periodic);
+  /// Appends a body made of `pieces` (with their `lows`), piece j moved by shifts[j]
+  /// (exact double-double addition): the step pipeline's periodic images.
+  void append_body(double radius, std::span<const Piece> pieces, std::span<const PieceLow> lows,
+                   std::span<const DdVec3> shifts);
   /// Box of the whole sphere of `body` over [u0, u1] (exact for the path, plus radius).
   Aabb swept_bounds(std::size_t body, double u0, double u1) const;
 
  private:
   double horizon_ = 0.0;
+  std::optional<PeriodicBox> periodic_;
   std::vector<double> radius_;
   std::vector<Piece> pieces_;
   std::vector<PieceLow> lows_;

@@ -74,6 +74,9 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
 bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
                             const std::optional<WallBox>& walls, std::vector<ScheduledContact>& contacts,
                             StepTimes* times, const std::atomic<bool>* cancel) {
+  // No image layer here (docs/periodic.md): a scene that wraps around is refused.
+  if (motion.periodic())
+    throw std::invalid_argument("the earliest scheduler does not support a scene that wraps around (box.boundary)");
   stats_ = {};
   contacts.clear();
   const std::size_t n = motion.size();

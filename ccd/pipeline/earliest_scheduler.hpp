@@ -97,7 +97,8 @@ class EarliestScheduler {
 
   /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
   /// order the checks ran. Adds stage times to `*times` when given. Stops early (returns
-  /// false) when `*cancel` becomes true.
+  /// false) when `*cancel` becomes true. Throws std::invalid_argument for a scene that
+  /// wraps around (motion.periodic(): no image layer, docs/periodic.md).
   bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
            std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr,
            const std::atomic<bool>* cancel = nullptr);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
+#include <tuple>
 
 namespace ccd {
 namespace {
@@ -35,6 +37,10 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
 
 void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
                        std::span<const std::size_t> start_piece, const RigidMotion* rigid) {
+  if (motion.periodic()) {
+    run_periodic(ctx, motion, out, times);
+    return;
+  }
   StepTimes local;
   Stopwatch watch(times != nullptr);
 
@@ -71,6 +77,84 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
     if (c.found()) out.contacts.push_back({p, c});
   }
   watch.stop(local.narrow);
+
+  if (times) {
+    times->bound += local.bound;
+    times->broad += local.broad;
+    times->narrow += local.narrow;
+  }
+}
+
+void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out,
+                                StepTimes* times) {
+  StepTimes local;
+  Stopwatch watch(times != nullptr);
+  if (!images_) images_ = std::make_unique<PeriodicImages>();
+  PeriodicImages& im = *images_;
+
+  watch.start();
+  bound_->prepare(im.begin(ctx, motion), boxes_);
+  if (im.add_images(boxes_)) bound_->prepare(im.context(), boxes_);
+  watch.stop(local.bound);
+
+  watch.start();
+  broad_->find_pairs(boxes_, local_pairs_);
+  watch.stop(local.broad);
+  out.broad_stats = broad_->stats();
+
+  // Image pairs -> (a, b, relative shift), each once.
+  image_pairs_.clear();
+  for (const BodyPair& p : local_pairs_) {
+    std::uint32_t x = p.a, y = p.b;
+    std::uint32_t a = im.owner(x), b = im.owner(y);
+    if (a == b) continue;
+    if (a > b) {
+      std::swap(a, b);
+      std::swap(x, y);
+    }
+    const ImageShift& sx = im.shift(x);
+    const ImageShift& sy = im.shift(y);
+    image_pairs_.push_back({a, b, ImageShift{sy[0] - sx[0], sy[1] - sx[1], sy[2] - sx[2]}, x, y});
+  }
+  auto key = [](const ImagePair& q) { return std::tie(q.a, q.b, q.shift); };
+  std::sort(image_pairs_.begin(), image_pairs_.end(), [&](const ImagePair& p, const ImagePair& q) { return key(p) < key(q); });
+  image_pairs_.erase(std::unique(image_pairs_.begin(), image_pairs_.end(),
+                                 [&](const ImagePair& p, const ImagePair& q) { return key(p) == key(q); }),
+                     image_pairs_.end());
+
+  out.candidates.clear();
+  out.passed.clear();
+  out.earliest.clear();
+  out.contacts.clear();
+  const NarrowInput base{&im.motion(), im.context().start, {}, ctx.t0, ctx.t1, sample_test(), nullptr};
+  const bool from_earliest = options_.narrow_from_earliest && !sample_test();
+  for (std::size_t i = 0; i < image_pairs_.size();) {
+    const std::uint32_t a = image_pairs_[i].a, b = image_pairs_[i].b;
+    out.candidates.push_back({a, b});
+    bool passed = false;
+    std::optional<ContactResult> best;
+    for (; i < image_pairs_.size() && image_pairs_[i].a == a && image_pairs_[i].b == b; ++i) {
+      const ImagePair& q = image_pairs_[i];
+      watch.start();
+      const PairTest t = bound_->test(std::min(q.x, q.y), std::max(q.x, q.y));
+      watch.stop(local.bound);
+      if (!t.possible()) continue;
+      if (!passed) {
+        out.passed.push_back({a, b});
+        out.earliest.push_back(t.earliest);
+        passed = true;
+      } else {
+        out.earliest.back() = std::min(out.earliest.back(), t.earliest);
+      }
+      watch.start();
+      NarrowInput in = base;
+      if (from_earliest) in.t0 = std::max(ctx.t0, std::min(t.earliest, ctx.t1));
+      const ContactResult c = narrow_(in, q.x, q.y);
+      watch.stop(local.narrow);
+      if (c.found() && (!best || c.toi < best->toi)) best = c;
+    }
+    if (best) out.contacts.push_back({BodyPair{a, b}, *best});
+  }
 
   if (times) {
     times->bound += local.bound;

@@ -17,6 +17,11 @@
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
 //     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
+// Periodic scenes (`motion.periodic()`): the same stages over the bodies and their images
+// (ccd/pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
+// image), each candidate image pair tested and solved with its shift, and reported as the
+// pair of bodies: once per pair in `candidates` and `passed` (earliest: the least over its
+// image pairs) and in `contacts` (the earliest contact over its image pairs).
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
 // The narrow phase starts at t0 for every pair by default. With
 // PipelineOptions::narrow_from_earliest it starts at the pair test's `earliest` instead
@@ -27,6 +32,7 @@
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/narrow_table.hpp>
+#include <ccd/pipeline/periodic_images.hpp>
 
 #include <memory>
 #include <vector>
@@ -75,10 +81,21 @@ class StepPipeline {
   bool sample_test() const { return knowledge_ == Knowledge::Instant; }
   const Bound& bound() const { return *bound_; }
   const BroadPhase& broad_phase() const { return *broad_; }
-  /// The boxes of the last step (one per body).
+  /// The boxes of the last step (one per body; in a periodic scene, one per body and then
+  /// one per image, ccd/pipeline/periodic_images.hpp).
   const std::vector<Aabb>& boxes() const { return boxes_; }
 
  private:
+  // Periodic scenes: the step over the bodies and their images, mapped back to body pairs.
+  void run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times);
+  struct ImagePair {
+    std::uint32_t a, b;  // bodies, a < b
+    ImageShift shift;    // of b's image relative to a's
+    std::uint32_t x, y;  // local bodies (owners a and b)
+  };
+  std::unique_ptr<PeriodicImages> images_;
+  std::vector<BodyPair> local_pairs_;
+  std::vector<ImagePair> image_pairs_;
   std::unique_ptr<Bound> bound_;
   Knowledge knowledge_;
   PipelineOptions options_;

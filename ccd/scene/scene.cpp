@@ -48,6 +48,8 @@ void Scene::add_rigid_body(Body body, RigidBody r) {
   rigid.push_back(std::move(r));
 }
 
+const char* to_string(Boundary b) { return b == Boundary::Wrap ? "wrap" : "reflect"; }
+
 const char* to_string(MotionKind kind) {
   switch (kind) {
     case MotionKind::Linear: return "linear";

@@ -19,6 +19,7 @@
 #include <ccd/shape/shape.hpp>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -63,9 +64,23 @@ struct RigidBody {
   }
 };
 
+/// What a face pair of the box does to a body's centre on one axis.
+enum class Boundary : std::uint8_t {
+  Reflect,  ///< elastic walls at min + r and max - r (restitution 1)
+  Wrap,     ///< periodic: a centre reaching max re-enters at min (and back), velocity kept
+};
+
+/// "reflect", "wrap".
+const char* to_string(Boundary b);
+
 struct WallBox {
   Vec3 min{Vec3::Zero()};
   Vec3 max{Vec3::Zero()};
+  /// Per axis; Reflect on every axis by default (ccd/scene/periodic.hpp for Wrap).
+  std::array<Boundary, 3> boundary{Boundary::Reflect, Boundary::Reflect, Boundary::Reflect};
+
+  bool wraps(int axis) const { return boundary[static_cast<std::size_t>(axis)] == Boundary::Wrap; }
+  bool any_wrap() const { return wraps(0) || wraps(1) || wraps(2); }
 };
 
 /// What a scene's motion needs, from least to most: the narrow phase and the bounds use
@@ -100,6 +115,8 @@ struct Scene {
   /// Appends a body with shape and spin `r`: body.radius becomes the shape's enclosing
   /// radius (unless r.shape is kNoShape); `rigid` is filled with defaults first if empty.
   void add_rigid_body(Body body, RigidBody r);
+  /// Some axis of the box wraps around (periodic boundary).
+  bool wraps() const { return box && box->any_wrap(); }
   /// The least motion model that describes this scene exactly.
   MotionKind motion_kind() const;
   /// Largest |own acceleration + gravity| over all bodies and all their changes.

@@ -22,6 +22,26 @@ std::string shape_path(std::size_t i) { return "shapes[" + std::to_string(i) + "
 // Largest accepted | |q| - 1 | of an orientation as read; it is then normalised.
 constexpr double kQuaternionTolerance = 1e-6;
 
+Boundary boundary_name(const Reader& r, const json& v, const std::string& p) {
+  const std::string name = r.string(v, p);
+  if (name == "reflect") return Boundary::Reflect;
+  if (name == "wrap") return Boundary::Wrap;
+  r.fail(p, "must be \"reflect\" or \"wrap\"");
+}
+
+// "box.boundary": one name for every axis, or an array of three.
+std::array<Boundary, 3> boundary_from_json(const Reader& r, const json& v) {
+  if (v.is_string()) {
+    const Boundary b = boundary_name(r, v, "box.boundary");
+    return {b, b, b};
+  }
+  if (!v.is_array() || v.size() != 3)
+    r.fail("box.boundary", "must be \"reflect\", \"wrap\" or an array of three of them (one per axis)");
+  std::array<Boundary, 3> out{};
+  for (std::size_t k = 0; k < 3; ++k) out[k] = boundary_name(r, v[k], "box.boundary[" + std::to_string(k) + "]");
+  return out;
+}
+
 Shape shape_from_json(const Reader& r, const json& o, const std::string& p) {
   if (!o.is_object()) r.fail(p, "must be an object with name and kind");
   Shape s;
@@ -94,10 +114,11 @@ Scene scene_from_json(const json& j, const std::string& file) {
   s.gravity = r.optional_vec3(j, "gravity", "");
   if (auto it = j.find("box"); it != j.end() && !it->is_null()) {
     if (!it->is_object()) r.fail("box", "must be an object with min and max");
-    r.only_fields(*it, "box", {"min", "max"});
+    r.only_fields(*it, "box", {"min", "max", "boundary"});
     WallBox box;
     box.min = r.vec3(r.require(*it, "min", "box"), "box.min");
     box.max = r.vec3(r.require(*it, "max", "box"), "box.max");
+    if (auto b = it->find("boundary"); b != it->end()) box.boundary = boundary_from_json(r, *b);
     s.box = box;
   }
   if (auto it = j.find("shapes"); it != j.end()) {
@@ -271,6 +292,20 @@ void validate_scene(const Scene& s, const std::string& file) {
           "|acceleration + gravity| * horizon^2 / 2");
     if (s.box) {
       for (int a = 0; a < 3; ++a) {
+        if (s.box->wraps(a)) {
+          // Periodic axis: the centre lies in [min, max] (the body may straddle the seam), and
+          // the edge is at least twice the largest diameter, so that at most one periodic
+          // image of another body can be within contact distance (ccd/scene/periodic.hpp).
+          if (b.position[a] < s.box->min[a] || b.position[a] > s.box->max[a])
+            r.fail(p + ".position[" + std::to_string(a) + "]",
+                   "centre must lie in [box.min, box.max] on a wrapped axis");
+          if (!(4.0 * b.radius <= s.box->max[a] - s.box->min[a]))
+            r.fail(p + ".radius", "box edge on wrapped axis " + std::to_string(a) +
+                                      " must be at least twice the body's diameter (4 x radius)");
+          if (rb.shape != kNoShape)
+            r.fail(p + ".shape", "a wrapped box (box.boundary) takes plain spheres only");
+          continue;
+        }
         if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])
           r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
         // A body as wide as the box on an axis touches both walls at once: it cannot move
@@ -314,7 +349,15 @@ json scene_to_json(const Scene& s) {
   j["format"] = v2 ? kSceneFormat : kSceneFormatV1;
   j["horizon"] = s.horizon;
   j["gravity"] = v(s.gravity);
-  if (s.box) j["box"] = {{"min", v(s.box->min)}, {"max", v(s.box->max)}};
+  if (s.box) {
+    j["box"] = {{"min", v(s.box->min)}, {"max", v(s.box->max)}};
+    // Written only when some axis wraps, so reflecting scenes and their digests stay as they were.
+    if (s.box->any_wrap()) {
+      json b = json::array();
+      for (Boundary x : s.box->boundary) b.push_back(to_string(x));
+      j["box"]["boundary"] = std::move(b);
+    }
+  }
   if (v2) {
     json shapes = json::array();
     for (const Shape& sh : s.shapes) shapes.push_back(shape_to_json(sh));

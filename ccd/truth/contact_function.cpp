@@ -9,19 +9,35 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
+// Piece ib of b, moved to b's periodic image nearest to a at time t in a periodic scene
+// (with the edge condition the only image that can touch a: ccd/scene/periodic.hpp).
+struct ImagePiece {
+  Piece q;
+  PieceLow low;
+};
+ImagePiece nearest_image(const Trajectories& traj, const Piece& qa, std::uint32_t b, std::size_t ib, double t) {
+  ImagePiece r{traj.pieces(b)[ib], traj.lows(b)[ib]};
+  if (const PeriodicBox* box = traj.periodic()) {
+    const ImageShift s = box->nearest(qa.position(t), r.q.position(t));
+    if (s != ImageShift{0, 0, 0}) shift_piece(r.q, r.low, image_offset(*box, s));
+  }
+  return r;
+}
+
 }  // namespace
 
 ContactCertainty certain_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::uint32_t b,
                                  std::size_t ib, double t) {
   const Piece& qa = traj.pieces(a)[ia];
-  const Piece& qb = traj.pieces(b)[ib];
+  const ImagePiece image = nearest_image(traj, qa, b, ib, t);
+  const Piece& qb = image.q;
   const double R = traj.radius(a) + traj.radius(b);
   const Vec3 d = qb.position(t) - qa.position(t);
   const double dn = d.norm();
   const double f = d.squaredNorm() - R * R;
   const double P = std::max(piece_magnitude(qa, t), piece_magnitude(qb, t));
   const PieceLow& la = traj.lows(a)[ia];
-  const PieceLow& lb = traj.lows(b)[ib];
+  const PieceLow& lb = image.low;
   const double edge = la.edge_error + lb.edge_error + la.start_error + lb.start_error +
                       la.velocity_error * std::fabs(t - qa.t0) + lb.velocity_error * std::fabs(t - qb.t0);
   const double band = 64.0 * kEps * (dn + R) * (dn + R + P) + 4.0 * (dn + R) * edge;
@@ -36,8 +52,8 @@ bool in_contact(const Trajectories& traj, std::uint32_t a, std::size_t ia, std::
     case ContactCertainty::Contact: return true;
     case ContactCertainty::Unsure: break;
   }
-  const PairMotion m(traj.pieces(a)[ia], traj.lows(a)[ia], traj.radius(a), traj.pieces(b)[ib], traj.lows(b)[ib],
-                     traj.radius(b));
+  const ImagePiece image = nearest_image(traj, traj.pieces(a)[ia], b, ib, t);
+  const PairMotion m(traj.pieces(a)[ia], traj.lows(a)[ia], traj.radius(a), image.q, image.low, traj.radius(b));
   const ContactValue v = m.value(t);
   return v.f <= v.error;
 }

@@ -61,6 +61,7 @@ struct WindowScratch {
   std::vector<Box> boxes;
   std::vector<ColumnEntry> entries;
   std::vector<std::uint32_t> big;
+  std::vector<std::uint32_t> owner;  ///< periodic scenes: the body of each box (images after the bodies)
 };
 
 bool overlap(const Box& x, const Box& y) {
@@ -92,6 +93,29 @@ void window_candidates(const Trajectories& traj, const std::vector<double>& marg
       extent[k] += b.hi[k] - b.lo[k];
     }
   }
+  // Periodic scenes: every image of a box that meets the cell joins the grid as a box of
+  // its own (ccd/scene/periodic.hpp, for_each_image), owned by its body.
+  std::vector<std::uint32_t>& owner = sc.owner;
+  owner.clear();
+  if (const PeriodicBox* pb = traj.periodic()) {
+    for (std::uint32_t i = 0; i < n; ++i) owner.push_back(i);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Box b = boxes[i];
+      const Aabb box{{b.lo[0], b.lo[1], b.lo[2]}, {b.hi[0], b.hi[1], b.hi[2]}};
+      pb->for_each_image(box, [&](const ImageShift& s) {
+        if (s == ImageShift{0, 0, 0}) return;
+        const Vec3 o = pb->offset(s);
+        Box c = b;
+        for (int k = 0; k < 3; ++k) {
+          c.lo[k] += o[k];
+          c.hi[k] += o[k];
+        }
+        boxes.push_back(c);
+        owner.push_back(i);
+      });
+    }
+  }
+  const std::size_t count = boxes.size();
   // Spread of the box centres per axis (variance about the mean: no cancellation).
   double var[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k) {
@@ -123,7 +147,7 @@ void window_candidates(const Trajectories& traj, const std::vector<double>& marg
   constexpr std::uint64_t kStride = std::uint64_t{1} << 21;
   sc.entries.clear();
   sc.big.clear();
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const Box& b = boxes[i];
     const std::int64_t y0 = cell(b.lo[gy], gy), y1 = cell(b.hi[gy], gy);
     const std::int64_t z0 = cell(b.lo[gz], gz), z1 = cell(b.hi[gz], gz);
@@ -138,7 +162,12 @@ void window_candidates(const Trajectories& traj, const std::vector<double>& marg
   }
   std::sort(sc.entries.begin(), sc.entries.end());
   const std::size_t start = keys.size();
-  auto emit = [&keys](std::uint32_t x, std::uint32_t y) {
+  auto emit = [&keys, &owner](std::uint32_t x, std::uint32_t y) {
+    if (!owner.empty()) {  // images: their bodies, never a body with itself
+      x = owner[x];
+      y = owner[y];
+      if (x == y) return;
+    }
     const std::uint64_t a = std::min(x, y), b = std::max(x, y);
     keys.push_back(a << 32 | b);
   };
@@ -157,13 +186,14 @@ void window_candidates(const Trajectories& traj, const std::vector<double>& marg
   // box only from that one's side).
   for (std::size_t k = 0; k < sc.big.size(); ++k) {
     const std::uint32_t g = sc.big[k];
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
       const bool other_big = std::binary_search(sc.big.begin(), sc.big.end(), static_cast<std::uint32_t>(i));
       if (i == g || (other_big && i < g)) continue;
       if (overlap(boxes[g], boxes[i])) emit(g, static_cast<std::uint32_t>(i));
     }
   }
   std::sort(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.end());
+  if (!owner.empty()) keys.erase(std::unique(keys.begin() + static_cast<std::ptrdiff_t>(start), keys.end()), keys.end());
 }
 
 std::size_t automatic_windows(const Trajectories& traj) {

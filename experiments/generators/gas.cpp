@@ -1,4 +1,5 @@
-// `gas`: spheres in a box moving in straight lines (no gravity, elastic walls).
+// `gas`: spheres in a box moving in straight lines (no gravity, elastic walls, or with
+// wrap=1 a box that loops around on every axis).
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/placement.hpp>
@@ -18,6 +19,8 @@ constexpr ParameterSpec kParameters[] = {
      kNonNegativeRate},
     kBoxFractionParameter,
     kOverlapParameter,
+    {"wrap", 0.0, "1: the box wraps around on every axis (periodic, no walls); 0: elastic walls",
+     ParameterKind::Integer, {0.0, 1.0, false, false}},
 };
 
 ccd::Scene generate_gas(const ParameterSet& p) {
@@ -36,13 +39,15 @@ ccd::Scene generate_gas(const ParameterSet& p) {
     b.position = placement.place(b.radius, [&] { return rng.position_in_cube(side, b.radius); });
     b.velocity = rng.velocity(speed_max);
   }
+  // The side is at least 4 r_max (cube_side): twice the largest diameter, as wrapping needs.
+  if (p.integer("wrap") == 1) scene.box->boundary.fill(ccd::Boundary::Wrap);
   return scene;
 }
 
 }  // namespace
 
 extern const Generator kGasGenerator = {
-    "gas", "spheres in a box [0, L]^3, straight-line motion, elastic walls, no gravity", kParameters,
+    "gas", "spheres in a box [0, L]^3, straight-line motion, elastic walls (or wrap=1: periodic), no gravity", kParameters,
     generate_gas};
 
 }  // namespace ccdlab

@@ -151,7 +151,7 @@ TEST_CASE("a misspelt field in a scene is an error with the nearest known name",
   }
   SECTION("in the box") {
     j["box"] = {{"min", {-100, -100, -100}}, {"max", {100, 100, 100}}, {"restitution", 1}};
-    CHECK(error_of(j) == "s.json: box.restitution: unknown field (known: min, max)");
+    CHECK(error_of(j) == "s.json: box.restitution: unknown field (known: min, max, boundary)");
   }
   SECTION("in an acceleration change") {
     j["bodies"][0]["acceleration_changes"] = json::array({{{"t", 0.5}, {"acceleration", {1, 0, 0}}, {"when", 1}}});
