@@ -68,7 +68,7 @@ int run_cloth_queries(std::span<const std::string> args) {
       if (!has_value) return usage_error("-o needs a folder name");
       out_path = args[++i];
     } else if (a == "--culler") {
-      if (!has_value) return usage_error("--culler needs a name (ccdlab methods lists them)");
+      if (!has_value) return usage_error("--culler needs a name: brute, bvh, bvh_cones, sensors or boxes:<broad phase>");
       culler_name = args[++i];
     } else if (a == "--steps") {
       if (!has_value) return usage_error("--steps needs A:B");
@@ -108,7 +108,9 @@ int run_cloth_queries(std::span<const std::string> args) {
   if (scene_arg.empty() || out_path.empty() || steps_text.empty())
     return usage_error("need a scene (drape, twist, pile or FILE.json), --steps A:B and -o DIR");
   const ccd::cloth::CullerEntry* culler = ccd::cloth::find_culler(culler_name);
-  if (!culler) return usage_error("--culler: unknown culler '" + culler_name + "' (ccdlab methods lists them)");
+  if (!culler)
+    return usage_error("--culler: unknown culler '" + culler_name +
+                       "' (brute, bvh, bvh_cones, sensors or boxes:<broad phase>)");
   try {
     const ccd::cloth::ClothScene scene = load_cloth_scene(scene_arg, n);
     if (end > static_cast<std::uint64_t>(scene.steps))
