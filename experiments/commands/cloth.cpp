@@ -1,5 +1,9 @@
 // `ccdlab cloth SCENE -o FRAMES.json`: simulates a cloth scene (built-in or a
-// ccdlab-cloth/1 file) and writes its frames.
+// ccdlab-cloth/1 file) and writes its frames (every E-th state, for pictures and the
+// viewer). The family's other members: `ccdlab cloth frames` (every state, for replay) and
+// `ccdlab cloth queries` (benchmark-format CCD queries), in cloth_frames.cpp and
+// cloth_queries.cpp.
+#include "cloth_subcommands.hpp"
 #include "command.hpp"
 
 #include <cloth/cull/cullers.hpp>
@@ -18,6 +22,8 @@ namespace ccdlab {
 namespace {
 
 int run_cloth(std::span<const std::string> args) {
+  if (!args.empty() && args[0] == "frames") return run_cloth_frames(args.subspan(1));
+  if (!args.empty() && args[0] == "queries") return run_cloth_queries(args.subspan(1));
   auto usage_error = [](const std::string& msg) {
     std::cerr << "ccdlab cloth: " << msg << " (see ccdlab cloth --help)\n";
     return kExitBadInput;
@@ -141,7 +147,7 @@ int run_cloth(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kClothCommand = {
-    "cloth", "simulate a cloth scene (drape, twist, pile or a ccdlab-cloth/1 file) and write its frames",
+    "cloth", "simulate a cloth scene (drape, twist, pile or a ccdlab-cloth/1 file); write its frames or its CCD queries",
     "usage: ccdlab cloth drape|twist|pile|SCENE.json -o FRAMES.json [--n N] [--steps K] [--every E] [--cull]\n"
     "\n"
     "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
@@ -151,6 +157,35 @@ extern const Command kClothCommand = {
     "runs the bvh and bvh_cones cullers on every step interval (continuous, separation =\n"
     "thickness) and prints their candidates and time per step.\n"
     "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n"
+    "\n"
+    "       ccdlab cloth frames drape|twist|pile|SCENE.json -o DIR [--n N] [--steps K]\n"
+    "\n"
+    "Simulates the cloth and writes the folder DIR (atomically: a temporary folder renamed):\n"
+    "  cloth.json     ccdlab-cloth-motion/1: triangles, edges, springs, obstacles, step, the\n"
+    "                 times of the states and the motion's digest\n"
+    "  positions.f64  the positions at every integrator step: little-endian IEEE-754 doubles,\n"
+    "                 [steps + 1][particles][3] (x, y, z), state 0 first\n"
+    "Reader: /usr/bin/python3 scripts/cloth_frames.py DIR. An existing DIR is replaced only\n"
+    "when it is empty or holds a cloth.json. --n sets the particles per side of a built-in\n"
+    "scene (default 32); --steps overrides the scene's step count.\n"
+    "\n"
+    "       ccdlab cloth queries drape|twist|pile|SCENE.json --steps A:B -o DIR [--culler NAME]\n"
+    "                            [--hard-below D] [--n N] [--threads T]\n"
+    "\n"
+    "Simulates the cloth and writes, for the step intervals A, A+1, ..., B-1 (interval s runs\n"
+    "from state s to state s + 1, each vertex moving linearly; 0 <= A < B <= the scene's\n"
+    "steps), every vertex-face and edge-edge candidate the culler returns (default bvh_cones,\n"
+    "one instance over the steps, separation = the scene's thickness) into the folder DIR\n"
+    "(atomically: a temporary folder renamed):\n"
+    "  vf.csv, ee.csv  the public CCD benchmark's layout (8 rows per query; x, y, z as exact\n"
+    "                  numerator, denominator of the doubles; column 7 the exact answer at\n"
+    "                  separation 0 from the rational reference), read by `ccdlab ccd`\n"
+    "  index.json      ccdlab-cloth-queries/1: the motion's digest, the options, and per query\n"
+    "                  its step, primitive ids and mesh vertices\n"
+    "--hard-below D keeps only the queries whose primitives come within distance D (m,\n"
+    "touching included) during their step, decided exactly; the culler then runs with\n"
+    "separation max(thickness, D). --threads T runs the exact reference on T threads (default 1).\n"
+    "An existing DIR is replaced only when it is empty or holds an index.json.\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_cloth};
