@@ -78,6 +78,11 @@ int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std:
 
 void TriangleBvh::refit(std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate) {
   vertex_boxes(x0, x1, inflate, vertex_boxes_);
+  const std::span<const Aabb> vb(vertex_boxes_);
+  edge_boxes_.resize(mesh_->edges.size());
+  for (std::size_t e = 0; e < mesh_->edges.size(); ++e) edge_boxes_[e] = edge_box(vb, mesh_->edges[e]);
+  triangle_boxes_.resize(mesh_->triangles.size());
+  for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) triangle_boxes_[t] = triangle_box(vb, mesh_->triangles[t]);
   if (root_ >= 0) refit_node(root_, x0, x1);
 }
 
@@ -98,9 +103,10 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
   Node& node = nodes_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) {
     const auto& v = mesh_->triangles[static_cast<std::size_t>(node.triangle)];
-    const Aabb box = triangle_box(vertex_boxes_, v);
+    const Aabb& box = triangle_boxes_[static_cast<std::size_t>(node.triangle)];
     node.lo = box.lo;
     node.hi = box.hi;
+    node.size = (node.hi - node.lo).norm();
     // Bernstein coefficients of the normal over the interval.
     const Vec3 a0 = x0[v[1]] - x0[v[0]], b0 = x0[v[2]] - x0[v[0]];
     const Vec3 a1 = x1[v[1]] - x1[v[0]], b1 = x1[v[2]] - x1[v[0]];
@@ -135,6 +141,7 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
   node.hi = l.hi.cwiseMax(r.hi);
+  node.size = (node.hi - node.lo).norm();
   const Vec3 sum = l.axis + r.axis;
   if (l.half_angle >= kAnyDirection || r.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
     node.axis = l.axis;
@@ -149,6 +156,7 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
 std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats,
                                                     std::span<const std::uint8_t> active) const {
   std::vector<Candidate> out;
+  out.reserve(last_count_ + last_count_ / 8);
   BvhStats s;
   Traversal tr{use_cones, active, {}, out, s};
   if (root_ >= 0) {
@@ -160,8 +168,9 @@ std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* st
     for (std::uint32_t v : orphans_)
       if (active.empty() || active[v]) orphan(v, root_, tr);
   }
-  std::sort(out.begin(), out.end());  // unique already: each pair is emitted once
+  sort_candidates(out);  // unique already: each pair is emitted once
   if (stats) *stats = s;
+  last_count_ = out.size();
   return out;
 }
 
@@ -202,7 +211,7 @@ void TriangleBvh::pair(int a, int b, Traversal& tr) const {
     emit(static_cast<std::uint32_t>(na.triangle), static_cast<std::uint32_t>(nb.triangle), tr);
     return;
   }
-  if (nb.triangle >= 0 || (na.triangle < 0 && (na.hi - na.lo).norm() >= (nb.hi - nb.lo).norm())) {
+  if (nb.triangle >= 0 || (na.triangle < 0 && na.size >= nb.size)) {
     pair(na.left, b, tr);
     pair(na.right, b, tr);
   } else {
@@ -228,31 +237,73 @@ void TriangleBvh::orphan(std::uint32_t v, int n, Traversal& tr) const {
 
 void TriangleBvh::emit(std::uint32_t ta, std::uint32_t tb, Traversal& tr) const {
   const ClothMesh& m = *mesh_;
-  const std::span<const Aabb> vb(vertex_boxes_);
+  const Aabb* vb = vertex_boxes_.data();
+  const Aabb* eb = edge_boxes_.data();
   const bool all = tr.active.empty();
   auto active = [&](std::uint32_t v) { return all || tr.active[v] != 0; };
   auto vertex_face = [&](std::uint32_t from, std::uint32_t to) {
     const auto& face_vertices = m.triangles[to];
     if (!all && !active(face_vertices[0]) && !active(face_vertices[1]) && !active(face_vertices[2])) return;
-    const Aabb face = triangle_box(vb, face_vertices);
+    const Aabb& face = triangle_boxes_[to];
     for (std::uint32_t v : m.triangles[from]) {
       if (vertex_owner_[v] != from || !active(v) || !vb[v].overlaps(face)) continue;
-      const Candidate c{PrimitivePair::VertexFace, v, to};
-      if (!adjacent(m, c)) tr.out.push_back(c);
+      if (v == face_vertices[0] || v == face_vertices[1] || v == face_vertices[2]) continue;  // adjacent
+      tr.out.push_back(Candidate{PrimitivePair::VertexFace, v, to});
     }
   };
   vertex_face(ta, tb);
   vertex_face(tb, ta);
   for (std::uint32_t ea : triangle_edges_[ta]) {
     if (edge_owner_[ea] != ta || !(active(m.edges[ea][0]) || active(m.edges[ea][1]))) continue;
-    const Aabb box_a = edge_box(vb, m.edges[ea]);
-    for (std::uint32_t eb : triangle_edges_[tb]) {
-      if (edge_owner_[eb] != tb || !(active(m.edges[eb][0]) || active(m.edges[eb][1])) ||
-          !box_a.overlaps(edge_box(vb, m.edges[eb])))
-        continue;
-      const Candidate c{PrimitivePair::EdgeEdge, std::min(ea, eb), std::max(ea, eb)};
-      if (!adjacent(m, c)) tr.out.push_back(c);
+    const Aabb& box_a = eb[ea];
+    const auto& va = m.edges[ea];
+    for (std::uint32_t e : triangle_edges_[tb]) {
+      if (edge_owner_[e] != tb || !(active(m.edges[e][0]) || active(m.edges[e][1])) || !box_a.overlaps(eb[e])) continue;
+      const auto& ve = m.edges[e];
+      if (va[0] == ve[0] || va[0] == ve[1] || va[1] == ve[0] || va[1] == ve[1]) continue;  // adjacent
+      tr.out.push_back(Candidate{PrimitivePair::EdgeEdge, std::min(ea, e), std::max(ea, e)});
     }
+  }
+}
+
+void sort_candidates(std::vector<Candidate>& c) {
+  // The order is (kind, a, b): a key packing the three fields in that order, each in the
+  // bits its largest value needs, sorts the same. A least-significant-digit radix sort on
+  // 11-bit digits sorts the keys in a few linear passes.
+  auto width = [](std::uint64_t n) {
+    int w = 0;
+    while (w < 64 && (n >> w) != 0) ++w;
+    return w;
+  };
+  std::uint32_t max_a = 0, max_b = 0;
+  for (const Candidate& x : c) {
+    max_a = std::max(max_a, x.a);
+    max_b = std::max(max_b, x.b);
+  }
+  const int wa = width(max_a), wb = width(max_b);
+  const int bits = wa + wb + 1;
+  if (bits > 64 || c.size() < 256) {
+    std::sort(c.begin(), c.end());
+    return;
+  }
+  thread_local std::vector<std::uint64_t> keys, tmp;
+  keys.resize(c.size());
+  tmp.resize(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i)
+    keys[i] = (static_cast<std::uint64_t>(c[i].kind) << (wa + wb)) | (static_cast<std::uint64_t>(c[i].a) << wb) | c[i].b;
+  constexpr int kDigit = 11;
+  for (int shift = 0; shift < bits; shift += kDigit) {
+    std::size_t count[(1u << kDigit) + 1] = {};
+    for (std::uint64_t k : keys) ++count[((k >> shift) & ((1u << kDigit) - 1)) + 1];
+    for (std::size_t d = 1; d <= (1u << kDigit); ++d) count[d] += count[d - 1];
+    for (std::uint64_t k : keys) tmp[count[(k >> shift) & ((1u << kDigit) - 1)]++] = k;
+    keys.swap(tmp);
+  }
+  const std::uint64_t mask_b = (std::uint64_t{1} << wb) - 1, mask_a = (std::uint64_t{1} << wa) - 1;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const std::uint64_t k = keys[i];
+    c[i] = Candidate{static_cast<PrimitivePair>(k >> (wa + wb)), static_cast<std::uint32_t>((k >> wb) & mask_a),
+                     static_cast<std::uint32_t>(k & mask_b)};
   }
 }
 

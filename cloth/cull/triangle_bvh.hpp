@@ -40,6 +40,10 @@ struct BvhStats {
   std::size_t cone_culled = 0;   ///< nodes not tested against themselves thanks to their cone
 };
 
+/// Sorts candidates in their (kind, a, b) order, as std::sort would, in linear time (a
+/// radix sort on packed keys; std::sort when the keys would not fit 64 bits).
+void sort_candidates(std::vector<Candidate>& c);
+
 class TriangleBvh {
  public:
   /// The topology from the state x (one position per mesh vertex).
@@ -67,6 +71,7 @@ class TriangleBvh {
     double half_angle = 0;  // radians; >= pi means "any direction"
     int left = -1, right = -1;
     int triangle = -1;      // leaf
+    double size = 0;        // |hi - lo|: steers which node of a pair is split
   };
   int build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x);
   void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1);
@@ -88,6 +93,8 @@ class TriangleBvh {
   std::vector<std::uint32_t> vertex_owner_, edge_owner_;  // the triangle owning each
   std::vector<std::uint32_t> orphans_;                    // vertices on no triangle
   std::vector<Aabb> vertex_boxes_;                        // after refit: inflated swept boxes
+  std::vector<Aabb> edge_boxes_, triangle_boxes_;         // after refit: unions of vertex boxes
+  mutable std::size_t last_count_ = 0;                    // candidates of the last call (reserve)
   std::vector<Node> nodes_;
   int root_ = -1;
 };
