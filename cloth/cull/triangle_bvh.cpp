@@ -33,6 +33,16 @@ TriangleBvh::TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x) : mesh_
     }
   for (std::uint32_t v = 0; v < vertex_owner_.size(); ++v)
     if (vertex_owner_[v] == none) orphans_.push_back(v);
+  owned_.resize(mesh.triangles.size());
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    Owned& o = owned_[t];
+    for (std::uint32_t v : mesh.triangles[t])
+      if (vertex_owner_[v] == t && (o.vertex_count == 0 || o.vertices[0] != v) && (o.vertex_count < 2 || o.vertices[1] != v))
+        o.vertices[o.vertex_count++] = v;
+    for (std::uint32_t e : triangle_edges_[t])
+      if (edge_owner_[e] == t && (o.edge_count == 0 || o.edges[0] != e) && (o.edge_count < 2 || o.edges[1] != e))
+        o.edges[o.edge_count++] = e;
+  }
   rebuild(x);
 }
 
@@ -83,6 +93,7 @@ void TriangleBvh::refit(std::span<const Vec3> x0, std::span<const Vec3> x1, doub
   for (std::size_t e = 0; e < mesh_->edges.size(); ++e) edge_boxes_[e] = edge_box(vb, mesh_->edges[e]);
   triangle_boxes_.resize(mesh_->triangles.size());
   for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) triangle_boxes_[t] = triangle_box(vb, mesh_->triangles[t]);
+  cones_.resize(nodes_.size());
   if (root_ >= 0) refit_node(root_, x0, x1);
 }
 
@@ -101,6 +112,7 @@ double TriangleBvh::quality() const {
 
 void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1) {
   Node& node = nodes_[static_cast<std::size_t>(n)];
+  Cone& cone = cones_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) {
     const auto& v = mesh_->triangles[static_cast<std::size_t>(node.triangle)];
     const Aabb& box = triangle_boxes_[static_cast<std::size_t>(node.triangle)];
@@ -115,8 +127,8 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     for (int k = 0; k < 3; ++k) {
       const double len = c[k].norm();
       if (!(len > 0) || !std::isfinite(len)) {
-        node.axis = Vec3::UnitZ();
-        node.half_angle = kAnyDirection;
+        cone.axis = Vec3::UnitZ();
+        cone.half_angle = kAnyDirection;
         return;
       }
       unit[k] = c[k] / len;
@@ -124,33 +136,35 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     const Vec3 sum = unit[0] + unit[1] + unit[2];
     const double sum_len = sum.norm();
     if (!(sum_len > 0)) {
-      node.axis = Vec3::UnitZ();
-      node.half_angle = kAnyDirection;
+      cone.axis = Vec3::UnitZ();
+      cone.half_angle = kAnyDirection;
       return;
     }
-    node.axis = sum / sum_len;
+    cone.axis = sum / sum_len;
     // One arc cosine per leaf (the cone's accuracy only steers culling: bvh_cones is not
     // claimed conservative).
-    const double lowest = std::min({node.axis.dot(unit[0]), node.axis.dot(unit[1]), node.axis.dot(unit[2])});
-    node.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
+    const double lowest = std::min({cone.axis.dot(unit[0]), cone.axis.dot(unit[1]), cone.axis.dot(unit[2])});
+    cone.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
   }
   refit_node(node.left, x0, x1);
   refit_node(node.right, x0, x1);
   const Node& l = nodes_[static_cast<std::size_t>(node.left)];
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
+  const Cone& lc = cones_[static_cast<std::size_t>(node.left)];
+  const Cone& rc = cones_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
   node.hi = l.hi.cwiseMax(r.hi);
   node.size = (node.hi - node.lo).norm();
-  const Vec3 sum = l.axis + r.axis;
-  if (l.half_angle >= kAnyDirection || r.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
-    node.axis = l.axis;
-    node.half_angle = kAnyDirection;
+  const Vec3 sum = lc.axis + rc.axis;
+  if (lc.half_angle >= kAnyDirection || rc.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
+    cone.axis = lc.axis;
+    cone.half_angle = kAnyDirection;
     return;
   }
-  node.axis = sum.normalized();
+  cone.axis = sum.normalized();
   // The axis bisects the children's axes: it is as far from each.
-  node.half_angle = std::acos(std::clamp(node.axis.dot(l.axis), -1.0, 1.0)) + std::max(l.half_angle, r.half_angle);
+  cone.half_angle = std::acos(std::clamp(cone.axis.dot(lc.axis), -1.0, 1.0)) + std::max(lc.half_angle, rc.half_angle);
 }
 
 std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats,
@@ -189,7 +203,7 @@ void TriangleBvh::self(int n, Traversal& tr) const {
   const Node& node = nodes_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) return;  // a triangle's own primitives are all adjacent
   if (!tr.node_active.empty() && !tr.node_active[static_cast<std::size_t>(n)]) return;
-  if (tr.cones && node.half_angle < std::numbers::pi / 2) {
+  if (tr.cones && cones_[static_cast<std::size_t>(n)].half_angle < std::numbers::pi / 2) {
     ++tr.stats.cone_culled;
     return;
   }
@@ -242,24 +256,31 @@ void TriangleBvh::emit(std::uint32_t ta, std::uint32_t tb, Traversal& tr) const 
   const bool all = tr.active.empty();
   auto active = [&](std::uint32_t v) { return all || tr.active[v] != 0; };
   auto vertex_face = [&](std::uint32_t from, std::uint32_t to) {
+    const Owned& o = owned_[from];
+    if (o.vertex_count == 0) return;
     const auto& face_vertices = m.triangles[to];
     if (!all && !active(face_vertices[0]) && !active(face_vertices[1]) && !active(face_vertices[2])) return;
     const Aabb& face = triangle_boxes_[to];
-    for (std::uint32_t v : m.triangles[from]) {
-      if (vertex_owner_[v] != from || !active(v) || !vb[v].overlaps(face)) continue;
+    for (int i = 0; i < o.vertex_count; ++i) {
+      const std::uint32_t v = o.vertices[i];
+      if (!active(v) || !vb[v].overlaps(face)) continue;
       if (v == face_vertices[0] || v == face_vertices[1] || v == face_vertices[2]) continue;  // adjacent
       tr.out.push_back(Candidate{PrimitivePair::VertexFace, v, to});
     }
   };
   vertex_face(ta, tb);
   vertex_face(tb, ta);
-  for (std::uint32_t ea : triangle_edges_[ta]) {
-    if (edge_owner_[ea] != ta || !(active(m.edges[ea][0]) || active(m.edges[ea][1]))) continue;
-    const Aabb& box_a = eb[ea];
+  const Owned& oa = owned_[ta];
+  const Owned& ob = owned_[tb];
+  for (int i = 0; i < oa.edge_count; ++i) {
+    const std::uint32_t ea = oa.edges[i];
     const auto& va = m.edges[ea];
-    for (std::uint32_t e : triangle_edges_[tb]) {
-      if (edge_owner_[e] != tb || !(active(m.edges[e][0]) || active(m.edges[e][1])) || !box_a.overlaps(eb[e])) continue;
+    if (!(active(va[0]) || active(va[1]))) continue;
+    const Aabb& box_a = eb[ea];
+    for (int j = 0; j < ob.edge_count; ++j) {
+      const std::uint32_t e = ob.edges[j];
       const auto& ve = m.edges[e];
+      if (!(active(ve[0]) || active(ve[1])) || !box_a.overlaps(eb[e])) continue;
       if (va[0] == ve[0] || va[0] == ve[1] || va[1] == ve[0] || va[1] == ve[1]) continue;  // adjacent
       tr.out.push_back(Candidate{PrimitivePair::EdgeEdge, std::min(ea, e), std::max(ea, e)});
     }

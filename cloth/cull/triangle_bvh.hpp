@@ -67,11 +67,13 @@ class TriangleBvh {
  private:
   struct Node {
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-    Vec3 axis = Vec3::UnitZ();  // normal cone axis (unit)
-    double half_angle = 0;  // radians; >= pi means "any direction"
     int left = -1, right = -1;
     int triangle = -1;      // leaf
     double size = 0;        // |hi - lo|: steers which node of a pair is split
+  };
+  struct Cone {  // per node, apart from the boxes the traversal reads most
+    Vec3 axis = Vec3::UnitZ();  // normal cone axis (unit)
+    double half_angle = 0;      // radians; >= pi means "any direction"
   };
   int build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x);
   void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1);
@@ -92,10 +94,16 @@ class TriangleBvh {
   std::vector<std::array<std::uint32_t, 3>> triangle_edges_;
   std::vector<std::uint32_t> vertex_owner_, edge_owner_;  // the triangle owning each
   std::vector<std::uint32_t> orphans_;                    // vertices on no triangle
+  struct Owned {  // a triangle's own vertices and edges (each listed once)
+    std::uint32_t vertices[3], edges[3];
+    int vertex_count = 0, edge_count = 0;
+  };
+  std::vector<Owned> owned_;
   std::vector<Aabb> vertex_boxes_;                        // after refit: inflated swept boxes
   std::vector<Aabb> edge_boxes_, triangle_boxes_;         // after refit: unions of vertex boxes
   mutable std::size_t last_count_ = 0;                    // candidates of the last call (reserve)
   std::vector<Node> nodes_;
+  std::vector<Cone> cones_;
   int root_ = -1;
 };
 
