@@ -20,7 +20,9 @@
 // |n| separation plus its error bound on every corner, or below its negative. Boxes are split in
 // halves (parameters stay dyadic, so the corner parameters are exact), earliest time first.
 //
-// Hit is reported when a box's image is narrower than `tolerance` times the query's extent
+// With a separation > 0, Hit is also reported, proved, when some corner's |F| plus its
+// error bound is within the separation (a contact found long before the boxes get narrow).
+// Otherwise Hit is reported when a box's image is narrower than `tolerance` times the query's extent
 // (its largest coordinate range over the eight points)
 // (so a false positive is a near miss within about that distance), or when the budget of
 // boxes is spent. Vertex-face boxes wholly outside a + b <= 1 are dropped.

@@ -142,6 +142,17 @@ TEST_CASE("triangle CCD with a minimum separation is conservative", "[cloth][ccd
     CHECK(hits > 0);
     INFO("false positives " << false_positives);
   }
+  SECTION("a pair well within the separation is a hit after a few boxes, not at the tolerance's depth") {
+    // A still vertex 1/16 above a still face, separation 1/8: the corner test proves the
+    // contact once a box corner lies under the vertex (the image-width rule alone needed
+    // over a hundred boxes to reach a width of 1e-9).
+    const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0), v(0.25, 0.25, 0.0625);
+    const LinearQuery still{{v, f0, f1, f2, v, f0, f1, f2}};
+    const auto r = triangle_ccd(PrimitivePair::VertexFace, still, opt);
+    CHECK(r.status == QueryStatus::Hit);
+    CHECK(r.toi == 0.0);
+    CHECK(r.boxes <= 16);
+  }
   SECTION("a vertex passing exactly at the separation is a hit, 2^-30 further is not") {
     const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0);
     const LinearQuery at{{Vec3(-1, 0.25, 0.125), f0, f1, f2, Vec3(2, 0.25, 0.125), f0, f1, f2}};
