@@ -79,9 +79,8 @@ int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std:
                      const double ca = centroid(a)[axis], cb = centroid(b)[axis];
                      return ca < cb || (ca == cb && a < b);
                    });
-  const int l = build(tris, begin, mid, x);
+  build(tris, begin, mid, x);  // the left child is node id + 1 (preorder)
   const int r = build(tris, mid, end, x);
-  nodes_[static_cast<std::size_t>(id)].left = l;
   nodes_[static_cast<std::size_t>(id)].right = r;
   return id;
 }
@@ -147,11 +146,11 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     cone.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
   }
-  refit_node(node.left, x0, x1);
+  refit_node(n + 1, x0, x1);
   refit_node(node.right, x0, x1);
-  const Node& l = nodes_[static_cast<std::size_t>(node.left)];
+  const Node& l = nodes_[static_cast<std::size_t>(n + 1)];
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
-  const Cone& lc = cones_[static_cast<std::size_t>(node.left)];
+  const Cone& lc = cones_[static_cast<std::size_t>(n + 1)];
   const Cone& rc = cones_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
   node.hi = l.hi.cwiseMax(r.hi);
@@ -194,7 +193,7 @@ std::uint8_t TriangleBvh::mark_active(int n, Traversal& tr) const {
   if (node.triangle >= 0) {
     for (std::uint32_t v : mesh_->triangles[static_cast<std::size_t>(node.triangle)]) a |= tr.active[v] ? 1 : 0;
   } else {
-    a = static_cast<std::uint8_t>(mark_active(node.left, tr) | mark_active(node.right, tr));
+    a = static_cast<std::uint8_t>(mark_active(n + 1, tr) | mark_active(node.right, tr));
   }
   return tr.node_active[static_cast<std::size_t>(n)] = a;
 }
@@ -207,9 +206,9 @@ void TriangleBvh::self(int n, Traversal& tr) const {
     ++tr.stats.cone_culled;
     return;
   }
-  self(node.left, tr);
+  self(n + 1, tr);
   self(node.right, tr);
-  pair(node.left, node.right, tr);
+  pair(n + 1, node.right, tr);
 }
 
 void TriangleBvh::pair(int a, int b, Traversal& tr) const {
@@ -226,10 +225,10 @@ void TriangleBvh::pair(int a, int b, Traversal& tr) const {
     return;
   }
   if (nb.triangle >= 0 || (na.triangle < 0 && na.size >= nb.size)) {
-    pair(na.left, b, tr);
+    pair(a + 1, b, tr);
     pair(na.right, b, tr);
   } else {
-    pair(a, nb.left, tr);
+    pair(a, b + 1, tr);
     pair(a, nb.right, tr);
   }
 }
@@ -245,7 +244,7 @@ void TriangleBvh::orphan(std::uint32_t v, int n, Traversal& tr) const {
     if (!adjacent(*mesh_, c)) tr.out.push_back(c);
     return;
   }
-  orphan(v, node.left, tr);
+  orphan(v, n + 1, tr);
   orphan(v, node.right, tr);
 }
 

@@ -65,11 +65,11 @@ class TriangleBvh {
   std::size_t vertex_count() const { return vertex_owner_.size(); }
 
  private:
-  struct Node {
+  struct alignas(64) Node {  // one cache line; an internal node's left child is the next node
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-    int left = -1, right = -1;
-    int triangle = -1;      // leaf
     double size = 0;        // |hi - lo|: steers which node of a pair is split
+    int right = -1;
+    int triangle = -1;      // leaf
   };
   struct Cone {  // per node, apart from the boxes the traversal reads most
     Vec3 axis = Vec3::UnitZ();  // normal cone axis (unit)
