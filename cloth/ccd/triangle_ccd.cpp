@@ -139,30 +139,59 @@ bool excluded_along(const double (&dir)[3], const Samples& c, double separation,
   return lo > bound || hi < -bound;
 }
 
+// The query moved so that its bounding box is centred on the origin, and a bound on what
+// that move rounded. F is unchanged by a common translation of all eight points, and its
+// error bound scales with the largest coordinate, so a query far from the origin is
+// searched as precisely as the same query near it.
+struct Centred {
+  LinearQuery q;
+  double magnitude = 0.0;  ///< largest |coordinate| of q
+  double shift_error = 0.0;  ///< largest rounding error of one moved coordinate (exact: TwoSum)
+  double extent = 0.0;     ///< largest coordinate range over the eight points
+};
+
+Centred centred(const LinearQuery& in) {
+  Centred c;
+  for (int k = 0; k < 3; ++k) {
+    double lo = in.x[0][k], hi = lo;
+    for (const Vec3& p : in.x) {
+      lo = std::min(lo, p[k]);
+      hi = std::max(hi, p[k]);
+    }
+    c.extent = std::max(c.extent, hi - lo);
+    const double mid = 0.5 * lo + 0.5 * hi;  // any value works: only the bound depends on it
+    for (std::size_t i = 0; i < 8; ++i) {
+      // TwoSum (Knuth): s + e == x - mid exactly.
+      const double a = in.x[i][k], b = -mid;
+      const double s = a + b, bb = s - a;
+      const double e = (a - (s - bb)) + (b - bb);
+      c.q.x[i][k] = s;
+      c.magnitude = std::max(c.magnitude, std::abs(s));
+      c.shift_error = std::max(c.shift_error, std::abs(e));
+    }
+  }
+  return c;
+}
+
 template <PrimitivePair Kind>
-TriangleCcdResult run(const LinearQuery& q, const TriangleCcdOptions& opt) {
+TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt) {
   TriangleCcdResult result;
-  double m = 0.0;
-  for (const Vec3& p : q.x)
-    for (int k = 0; k < 3; ++k) {
+  for (const Vec3& p : original.x)
+    for (int k = 0; k < 3; ++k)
       if (!std::isfinite(p[k]) || std::abs(p[k]) > kMaxMagnitude) {
         result.status = QueryStatus::Degenerate;
         result.toi = 0.0;
         return result;
       }
-      m = std::max(m, std::abs(p[k]));
-    }
-  // The query's extent (largest coordinate range) sets the width counted as contact.
-  double extent = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    double lo = q.x[0][k], hi = q.x[0][k];
-    for (const Vec3& p : q.x) {
-      lo = std::min(lo, p[k]);
-      hi = std::max(hi, p[k]);
-    }
-    extent = std::max(extent, hi - lo);
-  }
-  const double err = 16.0 * kEps * m + kUnderflowSlack;
+  // The search runs on the centred query. Each corner value of F is an affine combination
+  // of the eight points whose weights have absolute sum <= 4 per component (1 for the
+  // vertex or 2 for the two edge sides, <= 3 for a face's barycentric weights at any box
+  // corner), so the moved points' rounding (<= shift_error each) changes an exact corner
+  // value by at most 4 shift_error; the bound is rounded up by a relative 2^-40.
+  const Centred cq = centred(original);
+  const LinearQuery& q = cq.q;
+  const double extent = cq.extent;
+  const double err = (16.0 * kEps * cq.magnitude + 4.0 * cq.shift_error) * (1 + 0x1p-40) + kUnderflowSlack;
   // Rounded up: thr >= separation + err exactly.
   const double thr = std::nextafter(opt.separation + err, std::numeric_limits<double>::infinity());
   const double width_limit = std::max(opt.tolerance * extent, 4.0 * err);
@@ -213,6 +242,24 @@ TriangleCcdResult run(const LinearQuery& q, const TriangleCcdOptions& opt) {
                   (c.da[1][k1] * c.db[1][k2] - c.da[1][k2] * c.db[1][k1]);
     }
     if (excluded_along(mean, c, opt.separation, err) || excluded_along(normal, c, opt.separation, err)) continue;
+    // A proved contact: a corner (a point of the primitives' parameter domain) where
+    // |F| <= separation although every component may be off by err (|F| <= |f| + sqrt(3)
+    // err; |f| as computed is within a relative 4 eps of the exact one: both rounded up).
+    // Every earlier time is excluded or still open, so the first open time is a valid toi.
+    if (opt.separation > 0) {
+      bool touching = false;
+      for (int it = 0; it < 2 && !touching; ++it)
+        for (int i = 0; i < c.n && !touching; ++i) {
+          const double* f = c.f[it][i];
+          const double len = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+          touching = (len * (1 + 0x1p-48) + 2.0 * err) * (1 + 0x1p-48) <= opt.separation;
+        }
+      if (touching) {
+        result.status = QueryStatus::Hit;
+        result.toi = first_open_time(box.lo[0]);
+        return result;
+      }
+    }
     // The split direction: the parameter along which F changes most over the box (an
     // estimate; it only steers the search).
     double change[3] = {0.0, 0.0, 0.0};

@@ -11,14 +11,18 @@
 // the face point with barycentric (a, b); edge-edge: point a of edge A minus point b of
 // edge B), is multilinear in (t, a, b): over a box of parameters each component lies
 // between its smallest and largest corner value. Corner values are computed in doubles
-// with a proved error bound of 16 eps M (M the largest input magnitude, eps = 2^-52; the
-// derivation is in triangle_ccd.cpp). A box is proved contact-free when some component is
-// above separation + error on every corner, or below its negative, or when n.F is, for n
-// the mean corner value or da x db (the face normal, or the edges' common normal), above
+// with a proved error bound of 16 eps M (eps = 2^-52; the derivation is in triangle_ccd.cpp),
+// after the query is moved so that its bounding box is centred on the origin: M is the
+// largest coordinate of the moved query, whose own rounding (measured exactly) is added to
+// the bound. A query far from the origin is thus decided as finely as the same one near it.
+// A box is proved contact-free when some component is above separation + error on every
+// corner, or below its negative, or when n.F is, for n the mean corner value or da x db (the face normal, or the edges' common normal), above
 // |n| separation plus its error bound on every corner, or below its negative. Boxes are split in
 // halves (parameters stay dyadic, so the corner parameters are exact), earliest time first.
 //
-// Hit is reported when a box's image is narrower than `tolerance` times the query's extent
+// With a separation > 0, Hit is also reported, proved, when some corner's |F| plus its
+// error bound is within the separation (a contact found long before the boxes get narrow).
+// Otherwise Hit is reported when a box's image is narrower than `tolerance` times the query's extent
 // (its largest coordinate range over the eight points)
 // (so a false positive is a near miss within about that distance), or when the budget of
 // boxes is spent. Vertex-face boxes wholly outside a + b <= 1 are dropped.

@@ -54,15 +54,27 @@ TriangleBvh::TriangleBvh(const ClothMesh& mesh, std::span<const Vec3> x) : mesh_
     }
     chart_gap_ = gap * (1 - 1e-12);
   }
+  owned_.resize(mesh.triangles.size());
+  for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) {
+    Owned& o = owned_[t];
+    for (std::uint32_t v : mesh.triangles[t])
+      if (vertex_owner_[v] == t && (o.vertex_count == 0 || o.vertices[0] != v) && (o.vertex_count < 2 || o.vertices[1] != v))
+        o.vertices[o.vertex_count++] = v;
+    for (std::uint32_t e : triangle_edges_[t])
+      if (edge_owner_[e] == t && (o.edge_count == 0 || o.edges[0] != e) && (o.edge_count < 2 || o.edges[1] != e))
+        o.edges[o.edge_count++] = e;
+  }
   rebuild(x);
 }
 
 void TriangleBvh::rebuild(std::span<const Vec3> x) {
   nodes_.clear();
+  patches_.clear();
   root_ = -1;
   std::vector<std::uint32_t> tris(mesh_->triangles.size());
   for (std::uint32_t t = 0; t < tris.size(); ++t) tris[t] = t;
   nodes_.reserve(2 * tris.size());
+  patches_.reserve(2 * tris.size());
   if (!tris.empty()) root_ = build(tris, 0, tris.size(), x);
   order_ = std::move(tris);
 }
@@ -70,8 +82,9 @@ void TriangleBvh::rebuild(std::span<const Vec3> x) {
 int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x) {
   const int id = static_cast<int>(nodes_.size());
   nodes_.push_back(Node{});
-  nodes_[static_cast<std::size_t>(id)].begin = static_cast<std::uint32_t>(begin);
-  nodes_[static_cast<std::size_t>(id)].end = static_cast<std::uint32_t>(end);
+  patches_.push_back(Patch{});
+  patches_[static_cast<std::size_t>(id)].begin = static_cast<std::uint32_t>(begin);
+  patches_[static_cast<std::size_t>(id)].end = static_cast<std::uint32_t>(end);
   if (end - begin == 1) {
     nodes_[static_cast<std::size_t>(id)].triangle = static_cast<int>(tris[begin]);
     return id;
@@ -93,9 +106,8 @@ int TriangleBvh::build(std::vector<std::uint32_t>& tris, std::size_t begin, std:
                      const double ca = centroid(a)[axis], cb = centroid(b)[axis];
                      return ca < cb || (ca == cb && a < b);
                    });
-  const int l = build(tris, begin, mid, x);
+  build(tris, begin, mid, x);  // the left child is node id + 1 (preorder)
   const int r = build(tris, mid, end, x);
-  nodes_[static_cast<std::size_t>(id)].left = l;
   nodes_[static_cast<std::size_t>(id)].right = r;
   return id;
 }
@@ -105,6 +117,12 @@ void TriangleBvh::refit(std::span<const Vec3> x0, std::span<const Vec3> x1, doub
   separation_ = 2 * inflate;
   x0_.assign(x0.begin(), x0.end());
   x1_.assign(x1.begin(), x1.end());
+  const std::span<const Aabb> vb(vertex_boxes_);
+  edge_boxes_.resize(mesh_->edges.size());
+  for (std::size_t e = 0; e < mesh_->edges.size(); ++e) edge_boxes_[e] = edge_box(vb, mesh_->edges[e]);
+  triangle_boxes_.resize(mesh_->triangles.size());
+  for (std::size_t t = 0; t < mesh_->triangles.size(); ++t) triangle_boxes_[t] = triangle_box(vb, mesh_->triangles[t]);
+  cones_.resize(nodes_.size());
   if (root_ >= 0) refit_node(root_, x0, x1);
 }
 
@@ -123,24 +141,27 @@ double TriangleBvh::quality() const {
 
 void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1) {
   Node& node = nodes_[static_cast<std::size_t>(n)];
+  Cone& cone = cones_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) {
     const auto& v = mesh_->triangles[static_cast<std::size_t>(node.triangle)];
-    const Aabb box = triangle_box(vertex_boxes_, v);
+    const Aabb& box = triangle_boxes_[static_cast<std::size_t>(node.triangle)];
     node.lo = box.lo;
     node.hi = box.hi;
+    node.size = (node.hi - node.lo).norm();
     if (chart_gap_ > 0) {
-      node.count = 3;
-      node.su.setZero();
-      node.suu.setZero();
-      node.sx.setZero();
-      node.sxu.setZero();
+      Patch& patch = patches_[static_cast<std::size_t>(n)];
+      patch.count = 3;
+      patch.su.setZero();
+      patch.suu.setZero();
+      patch.sx.setZero();
+      patch.sxu.setZero();
       for (std::uint32_t vi : v) {
         const Eigen::Vector2d u(mesh_->chart[vi][0], mesh_->chart[vi][1]);
         const Vec3 xm = 0.5 * (x0[vi] + x1[vi]);
-        node.su += u;
-        node.suu += u * u.transpose();
-        node.sx += xm;
-        node.sxu += xm * u.transpose();
+        patch.su += u;
+        patch.suu += u * u.transpose();
+        patch.sx += xm;
+        patch.sxu += xm * u.transpose();
       }
     }
     // Bernstein coefficients of the normal over the interval.
@@ -151,8 +172,8 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     for (int k = 0; k < 3; ++k) {
       const double len = c[k].norm();
       if (!(len > 0) || !std::isfinite(len)) {
-        node.axis = Vec3::UnitZ();
-        node.half_angle = kAnyDirection;
+        cone.axis = Vec3::UnitZ();
+        cone.half_angle = kAnyDirection;
         return;
       }
       unit[k] = c[k] / len;
@@ -160,42 +181,51 @@ void TriangleBvh::refit_node(int n, std::span<const Vec3> x0, std::span<const Ve
     const Vec3 sum = unit[0] + unit[1] + unit[2];
     const double sum_len = sum.norm();
     if (!(sum_len > 0)) {
-      node.axis = Vec3::UnitZ();
-      node.half_angle = kAnyDirection;
+      cone.axis = Vec3::UnitZ();
+      cone.half_angle = kAnyDirection;
       return;
     }
-    node.axis = sum / sum_len;
-    // One arc cosine per leaf (the cone only steers culling: the flatness certificate is
-    // the proof).
-    const double lowest = std::min({node.axis.dot(unit[0]), node.axis.dot(unit[1]), node.axis.dot(unit[2])});
-    node.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
+    cone.axis = sum / sum_len;
+    // One arc cosine per leaf (the cone's accuracy only steers culling: the flatness certificate
+    // is the proof).
+    const double lowest = std::min({cone.axis.dot(unit[0]), cone.axis.dot(unit[1]), cone.axis.dot(unit[2])});
+    cone.half_angle = std::acos(std::clamp(lowest, -1.0, 1.0));
     return;
   }
-  refit_node(node.left, x0, x1);
+  refit_node(n + 1, x0, x1);
   refit_node(node.right, x0, x1);
-  const Node& l = nodes_[static_cast<std::size_t>(node.left)];
+  const Node& l = nodes_[static_cast<std::size_t>(n + 1)];
   const Node& r = nodes_[static_cast<std::size_t>(node.right)];
+  const Cone& lc = cones_[static_cast<std::size_t>(n + 1)];
+  const Cone& rc = cones_[static_cast<std::size_t>(node.right)];
   node.lo = l.lo.cwiseMin(r.lo);
   node.hi = l.hi.cwiseMax(r.hi);
-  node.count = l.count + r.count;
-  node.su = l.su + r.su;
-  node.suu = l.suu + r.suu;
-  node.sx = l.sx + r.sx;
-  node.sxu = l.sxu + r.sxu;
-  const Vec3 sum = l.axis + r.axis;
-  if (l.half_angle >= kAnyDirection || r.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
-    node.axis = l.axis;
-    node.half_angle = kAnyDirection;
+  if (chart_gap_ > 0) {
+    Patch& patch = patches_[static_cast<std::size_t>(n)];
+    const Patch& lp = patches_[static_cast<std::size_t>(n + 1)];
+    const Patch& rp = patches_[static_cast<std::size_t>(node.right)];
+    patch.count = lp.count + rp.count;
+    patch.su = lp.su + rp.su;
+    patch.suu = lp.suu + rp.suu;
+    patch.sx = lp.sx + rp.sx;
+    patch.sxu = lp.sxu + rp.sxu;
+  }
+  node.size = (node.hi - node.lo).norm();
+  const Vec3 sum = lc.axis + rc.axis;
+  if (lc.half_angle >= kAnyDirection || rc.half_angle >= kAnyDirection || !(sum.norm() > 1e-12)) {
+    cone.axis = lc.axis;
+    cone.half_angle = kAnyDirection;
     return;
   }
-  node.axis = sum.normalized();
+  cone.axis = sum.normalized();
   // The axis bisects the children's axes: it is as far from each.
-  node.half_angle = std::acos(std::clamp(node.axis.dot(l.axis), -1.0, 1.0)) + std::max(l.half_angle, r.half_angle);
+  cone.half_angle = std::acos(std::clamp(cone.axis.dot(lc.axis), -1.0, 1.0)) + std::max(lc.half_angle, rc.half_angle);
 }
 
 std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* stats,
                                                     std::span<const std::uint8_t> active) const {
   std::vector<Candidate> out;
+  out.reserve(last_count_ + last_count_ / 8);
   BvhStats s;
   Traversal tr{use_cones, active, {}, out, s};
   if (root_ >= 0) {
@@ -207,8 +237,9 @@ std::vector<Candidate> TriangleBvh::self_candidates(bool use_cones, BvhStats* st
     for (std::uint32_t v : orphans_)
       if (active.empty() || active[v]) orphan(v, root_, tr);
   }
-  std::sort(out.begin(), out.end());  // unique already: each pair is emitted once
+  sort_candidates(out);  // unique already: each pair is emitted once
   if (stats) *stats = s;
+  last_count_ = out.size();
   return out;
 }
 
@@ -218,7 +249,7 @@ std::uint8_t TriangleBvh::mark_active(int n, Traversal& tr) const {
   if (node.triangle >= 0) {
     for (std::uint32_t v : mesh_->triangles[static_cast<std::size_t>(node.triangle)]) a |= tr.active[v] ? 1 : 0;
   } else {
-    a = static_cast<std::uint8_t>(mark_active(node.left, tr) | mark_active(node.right, tr));
+    a = static_cast<std::uint8_t>(mark_active(n + 1, tr) | mark_active(node.right, tr));
   }
   return tr.node_active[static_cast<std::size_t>(n)] = a;
 }
@@ -227,19 +258,20 @@ void TriangleBvh::self(int n, Traversal& tr) const {
   const Node& node = nodes_[static_cast<std::size_t>(n)];
   if (node.triangle >= 0) return;  // a triangle's own primitives are all adjacent
   if (!tr.node_active.empty() && !tr.node_active[static_cast<std::size_t>(n)]) return;
-  if (tr.cones && node.half_angle < std::numbers::pi / 2) {
-    if (proved_apart(node)) {
+  if (tr.cones && cones_[static_cast<std::size_t>(n)].half_angle < std::numbers::pi / 2) {
+    if (proved_apart(n)) {
       ++tr.stats.cone_culled;
       return;
     }
     ++tr.stats.cone_rejected;
   }
-  self(node.left, tr);
+  self(n + 1, tr);
   self(node.right, tr);
-  pair(node.left, node.right, tr);
+  pair(n + 1, node.right, tr);
 }
 
-bool TriangleBvh::proved_apart(const Node& node) const {
+bool TriangleBvh::proved_apart(int index) const {
+  const Patch& node = patches_[static_cast<std::size_t>(index)];
   if (!(chart_gap_ > 0) || node.count < 3) return false;
   // The affine fit P x ~ B u + c (least squares over the corners, mid-interval). Any B and c
   // give a valid certificate; the fit only makes it likely to succeed.
@@ -251,7 +283,7 @@ bool TriangleBvh::proved_apart(const Node& node) const {
   const double det_uu = cuu.determinant();
   if (!(det_uu > 1e-12 * cuu.squaredNorm())) return false;
   // P: an orthonormal basis of the plane normal to the cone's axis.
-  const Vec3 a = node.axis;
+  const Vec3 a = cones_[static_cast<std::size_t>(index)].axis;
   Vec3 e1 = std::abs(a.x()) < 0.9 ? Vec3::UnitX().cross(a) : Vec3::UnitY().cross(a);
   e1.normalize();
   const Vec3 e2 = a.cross(e1).normalized();
@@ -300,11 +332,11 @@ void TriangleBvh::pair(int a, int b, Traversal& tr) const {
     emit(static_cast<std::uint32_t>(na.triangle), static_cast<std::uint32_t>(nb.triangle), tr);
     return;
   }
-  if (nb.triangle >= 0 || (na.triangle < 0 && (na.hi - na.lo).norm() >= (nb.hi - nb.lo).norm())) {
-    pair(na.left, b, tr);
+  if (nb.triangle >= 0 || (na.triangle < 0 && na.size >= nb.size)) {
+    pair(a + 1, b, tr);
     pair(na.right, b, tr);
   } else {
-    pair(a, nb.left, tr);
+    pair(a, b + 1, tr);
     pair(a, nb.right, tr);
   }
 }
@@ -320,37 +352,86 @@ void TriangleBvh::orphan(std::uint32_t v, int n, Traversal& tr) const {
     if (!adjacent(*mesh_, c)) tr.out.push_back(c);
     return;
   }
-  orphan(v, node.left, tr);
+  orphan(v, n + 1, tr);
   orphan(v, node.right, tr);
 }
 
 void TriangleBvh::emit(std::uint32_t ta, std::uint32_t tb, Traversal& tr) const {
   const ClothMesh& m = *mesh_;
-  const std::span<const Aabb> vb(vertex_boxes_);
+  const Aabb* vb = vertex_boxes_.data();
+  const Aabb* eb = edge_boxes_.data();
   const bool all = tr.active.empty();
   auto active = [&](std::uint32_t v) { return all || tr.active[v] != 0; };
   auto vertex_face = [&](std::uint32_t from, std::uint32_t to) {
+    const Owned& o = owned_[from];
+    if (o.vertex_count == 0) return;
     const auto& face_vertices = m.triangles[to];
     if (!all && !active(face_vertices[0]) && !active(face_vertices[1]) && !active(face_vertices[2])) return;
-    const Aabb face = triangle_box(vb, face_vertices);
-    for (std::uint32_t v : m.triangles[from]) {
-      if (vertex_owner_[v] != from || !active(v) || !vb[v].overlaps(face)) continue;
-      const Candidate c{PrimitivePair::VertexFace, v, to};
-      if (!adjacent(m, c)) tr.out.push_back(c);
+    const Aabb& face = triangle_boxes_[to];
+    for (int i = 0; i < o.vertex_count; ++i) {
+      const std::uint32_t v = o.vertices[i];
+      if (!active(v) || !vb[v].overlaps(face)) continue;
+      if (v == face_vertices[0] || v == face_vertices[1] || v == face_vertices[2]) continue;  // adjacent
+      tr.out.push_back(Candidate{PrimitivePair::VertexFace, v, to});
     }
   };
   vertex_face(ta, tb);
   vertex_face(tb, ta);
-  for (std::uint32_t ea : triangle_edges_[ta]) {
-    if (edge_owner_[ea] != ta || !(active(m.edges[ea][0]) || active(m.edges[ea][1]))) continue;
-    const Aabb box_a = edge_box(vb, m.edges[ea]);
-    for (std::uint32_t eb : triangle_edges_[tb]) {
-      if (edge_owner_[eb] != tb || !(active(m.edges[eb][0]) || active(m.edges[eb][1])) ||
-          !box_a.overlaps(edge_box(vb, m.edges[eb])))
-        continue;
-      const Candidate c{PrimitivePair::EdgeEdge, std::min(ea, eb), std::max(ea, eb)};
-      if (!adjacent(m, c)) tr.out.push_back(c);
+  const Owned& oa = owned_[ta];
+  const Owned& ob = owned_[tb];
+  for (int i = 0; i < oa.edge_count; ++i) {
+    const std::uint32_t ea = oa.edges[i];
+    const auto& va = m.edges[ea];
+    if (!(active(va[0]) || active(va[1]))) continue;
+    const Aabb& box_a = eb[ea];
+    for (int j = 0; j < ob.edge_count; ++j) {
+      const std::uint32_t e = ob.edges[j];
+      const auto& ve = m.edges[e];
+      if (!(active(ve[0]) || active(ve[1])) || !box_a.overlaps(eb[e])) continue;
+      if (va[0] == ve[0] || va[0] == ve[1] || va[1] == ve[0] || va[1] == ve[1]) continue;  // adjacent
+      tr.out.push_back(Candidate{PrimitivePair::EdgeEdge, std::min(ea, e), std::max(ea, e)});
     }
+  }
+}
+
+void sort_candidates(std::vector<Candidate>& c) {
+  // The order is (kind, a, b): a key packing the three fields in that order, each in the
+  // bits its largest value needs, sorts the same. A least-significant-digit radix sort on
+  // 11-bit digits sorts the keys in a few linear passes.
+  auto width = [](std::uint64_t n) {
+    int w = 0;
+    while (w < 64 && (n >> w) != 0) ++w;
+    return w;
+  };
+  std::uint32_t max_a = 0, max_b = 0;
+  for (const Candidate& x : c) {
+    max_a = std::max(max_a, x.a);
+    max_b = std::max(max_b, x.b);
+  }
+  const int wa = width(max_a), wb = width(max_b);
+  const int bits = wa + wb + 1;
+  if (bits > 64 || c.size() < 256) {
+    std::sort(c.begin(), c.end());
+    return;
+  }
+  thread_local std::vector<std::uint64_t> keys, tmp;
+  keys.resize(c.size());
+  tmp.resize(c.size());
+  for (std::size_t i = 0; i < c.size(); ++i)
+    keys[i] = (static_cast<std::uint64_t>(c[i].kind) << (wa + wb)) | (static_cast<std::uint64_t>(c[i].a) << wb) | c[i].b;
+  constexpr int kDigit = 11;
+  for (int shift = 0; shift < bits; shift += kDigit) {
+    std::size_t count[(1u << kDigit) + 1] = {};
+    for (std::uint64_t k : keys) ++count[((k >> shift) & ((1u << kDigit) - 1)) + 1];
+    for (std::size_t d = 1; d <= (1u << kDigit); ++d) count[d] += count[d - 1];
+    for (std::uint64_t k : keys) tmp[count[(k >> shift) & ((1u << kDigit) - 1)]++] = k;
+    keys.swap(tmp);
+  }
+  const std::uint64_t mask_b = (std::uint64_t{1} << wb) - 1, mask_a = (std::uint64_t{1} << wa) - 1;
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const std::uint64_t k = keys[i];
+    c[i] = Candidate{static_cast<PrimitivePair>(k >> (wa + wb)), static_cast<std::uint32_t>((k >> wb) & mask_a),
+                     static_cast<std::uint32_t>(k & mask_b)};
   }
 }
 

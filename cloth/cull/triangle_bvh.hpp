@@ -50,6 +50,10 @@ struct BvhStats {
   std::size_t cone_rejected = 0; ///< nodes with a narrow cone whose certificate failed
 };
 
+/// Sorts candidates in their (kind, a, b) order, as std::sort would, in linear time (a
+/// radix sort on packed keys; std::sort when the keys would not fit 64 bits).
+void sort_candidates(std::vector<Candidate>& c);
+
 class TriangleBvh {
  public:
   /// The topology from the state x (one position per mesh vertex).
@@ -71,22 +75,28 @@ class TriangleBvh {
   std::size_t vertex_count() const { return vertex_owner_.size(); }
 
  private:
-  struct Node {
+  struct alignas(64) Node {  // one cache line; an internal node's left child is the next node
     Vec3 lo = Vec3::Zero(), hi = Vec3::Zero();
-    Vec3 axis = Vec3::UnitZ();  // normal cone axis (unit)
-    double half_angle = 0;  // radians; >= pi means "any direction"
-    int left = -1, right = -1;
+    double size = 0;        // |hi - lo|: steers which node of a pair is split
+    int right = -1;
     int triangle = -1;      // leaf
-    std::uint32_t begin = 0, end = 0;  // its triangles: order_[begin, end)
-    // Moments of (chart u, mid-interval position x) over its triangles' corners (affine fit).
+  };
+  struct Cone {  // per node, apart from the boxes the traversal reads most
+    Vec3 axis = Vec3::UnitZ();  // normal cone axis (unit)
+    double half_angle = 0;      // radians; >= pi means "any direction"
+  };
+  // Per node, for the flatness certificate: its triangles order_[begin, end) and the moments
+  // of (chart u, mid-interval position x) over their corners (affine fit).
+  struct Patch {
+    std::uint32_t begin = 0, end = 0;
     double count = 0;
     Eigen::Vector2d su = Eigen::Vector2d::Zero();
     Eigen::Matrix2d suu = Eigen::Matrix2d::Zero();
     Vec3 sx = Vec3::Zero();
     Eigen::Matrix<double, 3, 2> sxu = Eigen::Matrix<double, 3, 2>::Zero();
   };
-  /// The flatness certificate of a node (see the header comment) for the last refit.
-  bool proved_apart(const Node& node) const;
+  /// The flatness certificate of node n (see the header comment) for the last refit.
+  bool proved_apart(int n) const;
   int build(std::vector<std::uint32_t>& tris, std::size_t begin, std::size_t end, std::span<const Vec3> x);
   void refit_node(int n, std::span<const Vec3> x0, std::span<const Vec3> x1);
   struct Traversal {
@@ -106,8 +116,17 @@ class TriangleBvh {
   std::vector<std::array<std::uint32_t, 3>> triangle_edges_;
   std::vector<std::uint32_t> vertex_owner_, edge_owner_;  // the triangle owning each
   std::vector<std::uint32_t> orphans_;                    // vertices on no triangle
+  struct Owned {  // a triangle's own vertices and edges (each listed once)
+    std::uint32_t vertices[3], edges[3];
+    int vertex_count = 0, edge_count = 0;
+  };
+  std::vector<Owned> owned_;
   std::vector<Aabb> vertex_boxes_;                        // after refit: inflated swept boxes
+  std::vector<Aabb> edge_boxes_, triangle_boxes_;         // after refit: unions of vertex boxes
+  mutable std::size_t last_count_ = 0;                    // candidates of the last call (reserve)
   std::vector<Node> nodes_;
+  std::vector<Cone> cones_;
+  std::vector<Patch> patches_;
   std::vector<std::uint32_t> order_;  // triangles in leaf order
   int root_ = -1;
   double chart_gap_ = 0;              // lower bound of the chart's smallest altitude; 0: no chart

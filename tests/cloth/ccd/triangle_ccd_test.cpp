@@ -69,10 +69,10 @@ TEST_CASE("triangle CCD never misses a hand-built hard case", "[cloth][ccd]") {
         CHECK(r.status == QueryStatus::Hit);
         CHECK_FALSE(r.budget_spent);
       }
-      // Near the origin a miss by 2^-30 is resolved with a tolerance of 2^-40 (far from the
-      // origin the rounding error, 16 eps 2^20 ~ 4e-9, exceeds the gap: a hit is allowed).
-      const bool far = c.name.size() > 4 && c.name.substr(c.name.size() - 4) == "_far";
-      if (!c.contact && !far) {
+      // A miss by 2^-30 is resolved with a tolerance of 2^-40, near the origin and 2^20
+      // from it alike: the kernel centres the query first (without that, the rounding bound
+      // 16 eps 2^20 ~ 4e-9 exceeded the gap and every "_far" miss was reported as a hit).
+      if (!c.contact) {
         TriangleCcdOptions fine;
         fine.tolerance = 0x1p-40;
         CHECK(triangle_ccd(kind, c.query, fine).status == QueryStatus::Miss);
@@ -96,6 +96,41 @@ TEST_CASE("triangle CCD against the exact reference on a coarse dyadic grid", "[
   }
 }
 
+TEST_CASE("triangle CCD far from the origin against the exact reference", "[cloth][ccd]") {
+  // The kernel centres each query before its search; the move is exact for these shifted
+  // grid queries (all coordinates near 2^20 + 1/3), and inexact for the long primitives
+  // (one point pair pushed 10^6 / 3 away, so the centre falls between the points and the
+  // moved coordinates round): both paths must keep zero misses. The exact reference reads
+  // the doubles as they are, after the shift's own rounding.
+  std::mt19937_64 rng(1620);
+  const Vec3 far(1048576.0 + 1.0 / 3, -1048576.0 - 1.0 / 3, 524288.0 + 1.0 / 3);
+  for (PrimitivePair kind : {PrimitivePair::VertexFace, PrimitivePair::EdgeEdge}) {
+    INFO(to_string(kind));
+    int hits = 0, false_positives = 0, long_hits = 0, long_false_positives = 0;
+#ifdef CCDLAB_SANITIZED
+    const int n = 100;  // the exact reference is slow under the sanitizers
+#else
+    const int n = 200;
+#endif
+    for (int i = 0; i < n; ++i) {
+      LinearQuery q = grid_query(rng);
+      LinearQuery shifted = q;
+      for (Vec3& p : shifted.x) p += far;
+      check_against_exact(kind, shifted, {}, 0, hits, false_positives);
+      LinearQuery stretched = q;
+      stretched.x[1] += Vec3(1e6 / 3, 0, 0);
+      stretched.x[5] += Vec3(1e6 / 3, 0, 0);
+      check_against_exact(kind, stretched, {}, 0, long_hits, long_false_positives);
+    }
+    CHECK(hits > n / 10);  // both answers occur: the comparison has contacts to miss
+    CHECK(long_hits > n / 20);
+    // Shifted grid misses stay about 1/64 from contact (the shift rounds by 2^-32 at most):
+    // the centred search resolves them.
+    CHECK(false_positives == 0);
+    INFO("stretched false positives " << long_false_positives);
+  }
+}
+
 TEST_CASE("triangle CCD with a minimum separation is conservative", "[cloth][ccd]") {
   std::mt19937_64 rng(1616);
   TriangleCcdOptions opt;
@@ -106,6 +141,17 @@ TEST_CASE("triangle CCD with a minimum separation is conservative", "[cloth][ccd
     for (int i = 0; i < 40; ++i) check_against_exact(kind, grid_query(rng), opt, mpq_class(1, 64), hits, false_positives);
     CHECK(hits > 0);
     INFO("false positives " << false_positives);
+  }
+  SECTION("a pair well within the separation is a hit after a few boxes, not at the tolerance's depth") {
+    // A still vertex 1/16 above a still face, separation 1/8: the corner test proves the
+    // contact once a box corner lies under the vertex (the image-width rule alone needed
+    // over a hundred boxes to reach a width of 1e-9).
+    const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0), v(0.25, 0.25, 0.0625);
+    const LinearQuery still{{v, f0, f1, f2, v, f0, f1, f2}};
+    const auto r = triangle_ccd(PrimitivePair::VertexFace, still, opt);
+    CHECK(r.status == QueryStatus::Hit);
+    CHECK(r.toi == 0.0);
+    CHECK(r.boxes <= 16);
   }
   SECTION("a vertex passing exactly at the separation is a hit, 2^-30 further is not") {
     const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0);
