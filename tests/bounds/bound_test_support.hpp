@@ -235,7 +235,7 @@ inline ContactBatch wall_contact_batch(std::mt19937_64& rng, std::size_t n, doub
     s.bodies.push_back(first.bodies[i]);
     s.bodies.push_back(b);
     cb.tc.push_back(tc);
-    cb.kind.push_back("after_wall_reflection");
+    cb.kind.emplace_back(std::string_view("after_wall_reflection"));
   }
   cb.step.finish(0.0, h);
   return cb;
