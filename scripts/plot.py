@@ -36,7 +36,7 @@ COST = {"wall": ("seconds_per_simulated_second", "seconds of computation per sim
 cost_field, cost_label = COST["wall"]
 
 
-def cost(r):
+def cost_of(r):
     return r[cost_field]
 MARKERS = "osD^v<>pP*Xh"
 
@@ -148,7 +148,7 @@ def speed_accuracy(res, outdir, formats):
     for i, (name, rs) in enumerate(groups.items()):
         zero = all(r["missed"] == 0 for r in rs)
         st = style(i)
-        xs = [cost(r) for r in rs]
+        xs = [cost_of(r) for r in rs]
         ys = [r["missed_fraction"] for r in rs]
         pts += list(zip(xs, ys))
         ax.scatter(xs, ys, s=55 if zero else 22, color=st["color"], marker="*" if zero else st["marker"],
@@ -174,8 +174,8 @@ def zero_miss_panel(ax, groups):
     rows = []
     for i, (name, rs) in enumerate(groups.items()):
         zero = [r for r in rs if r["missed"] == 0]
-        best = min(zero, key=cost) if zero else None
-        rows.append((cost(best) if best else float("inf"), name, i, best))
+        best = min(zero, key=cost_of) if zero else None
+        rows.append((cost_of(best) if best else float("inf"), name, i, best))
     rows.sort(key=lambda row: (row[0], row[1]))
     finite = [row[0] for row in rows if row[0] != float("inf")]
     for y, (cost, name, i, best) in enumerate(rows):
@@ -222,7 +222,7 @@ def main(argv=None):
                         "missed fraction of contact events")
     paths += line_chart(res, outdir, formats, "false_positives", lambda r: r["false_positives_per_step"],
                         "false positives per step")
-    paths += line_chart(res, outdir, formats, "cost", cost,
+    paths += line_chart(res, outdir, formats, "cost", cost_of,
                         "cost (" + ("CPU " if args.cost == "cpu" else "") + "s per simulated s)", yscale="log")
     paths += speed_accuracy(res, outdir, formats)
     discrete = {r["method"] for r in res["records"] if not r["continuous"]}
