@@ -201,6 +201,11 @@ TEST_CASE("the earliest scheduler refuses what it cannot run", "[pipeline][sched
                                          ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
   o.reach = 0.0;
+  o.chunk = -1.0;  // a chunk is a multiple of a length: >= 0
+  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
+                  std::invalid_argument);
+  o.chunk = 2.0;
   o.window = 0.0;
   CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
                                          ccd::parse_broad_phase("grid").make(), o),
