@@ -4,6 +4,7 @@
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 #include <ccd/pipeline/earliest_scheduler.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
+#include <ccd/util/thread_cpu_time.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -27,6 +28,7 @@ struct Counts {
   std::uint64_t unexpected = 0;
   std::uint64_t pair_checks = 0, narrow_calls = 0, refreshes = 0, steps = 0;  // scheduled methods
   double bound_s = 0, broad_s = 0, narrow_s = 0, total_s = 0;
+  double cpu_s = 0;  // the calling thread's CPU time over the same span as total_s
   double first_broad_s = 0;  // the broad phase at the first step (sap: the initial sort)
   std::vector<double> lag, penetration;  // per event; NaN = not detected
   bool operator==(const Counts& o) const {
@@ -94,13 +96,17 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   options.align = method.scheduler.options.integer("align") != 0;
   options.refresh_bodies = method.scheduler.options.integer("refresh_bodies") != 0;
   options.reach = method.scheduler.options.number("reach");
+  options.recheck = method.scheduler.options.integer("recheck") != 0;
+  options.chunk = method.scheduler.options.number("chunk");
   options.rigid = in.rigid;
   ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
                                    method.broad_phase.make(), options);
   std::vector<ccd::ScheduledContact> contacts;
   ccd::StepTimes times;
   const auto t_start = Clock::now();
+  const double cpu_start = ccd::thread_cpu_seconds();
   cancelled = !scheduler.run(traj, in.scene->horizon, in.acceleration_bound, in.scene->box, contacts, &times, in.cancel);
+  c.cpu_s = ccd::thread_cpu_seconds() - cpu_start;
   c.total_s = seconds_since(t_start);
   c.bound_s = times.bound;
   c.broad_s = times.broad;
@@ -149,6 +155,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   ctx.rigid = in.rigid;
 
   const auto t_start = Clock::now();
+  const double cpu_start = ccd::thread_cpu_seconds();
   for (std::uint64_t k = 0; k < steps; ++k) {
     if (in.cancel && in.cancel->load(std::memory_order_relaxed)) {
       cancelled = true;
@@ -181,6 +188,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
     // Bookkeeping against the truth (not timed).
     for (const ccd::PairContact& pc : step.contacts) match_contact(in, continuous, pc.pair, pc.contact, t0, t1, c);
   }
+  c.cpu_s = ccd::thread_cpu_seconds() - cpu_start;
   c.total_s = seconds_since(t_start);
   return c;
 }
@@ -280,13 +288,14 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.counters.assign(c.counters.begin(), c.counters.end());
   r.self_check_unexpected = c.unexpected;
   r.rebuilds = c.rebuilds;
-  std::vector<double> b, br, fb, n, t;
+  std::vector<double> b, br, fb, n, t, cpu;
   for (const Counts& o : runs) {
     b.push_back(o.bound_s);
     br.push_back(o.broad_s);
     fb.push_back(o.first_broad_s);
     n.push_back(o.narrow_s);
     t.push_back(o.total_s);
+    cpu.push_back(o.cpu_s);
   }
   r.bound_seconds = median(b);
   r.broad_seconds = median(br);
@@ -294,6 +303,8 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.narrow_seconds = median(n);
   r.total_seconds = median(t);
   r.seconds_per_simulated_second = r.total_seconds / T;
+  r.cpu_seconds = median(cpu);
+  r.cpu_seconds_per_simulated_second = r.cpu_seconds / T;
   return r;
 }
 
@@ -337,6 +348,8 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"narrow_seconds", r.narrow_seconds},
           {"total_seconds", r.total_seconds},
           {"seconds_per_simulated_second", r.seconds_per_simulated_second},
+          {"cpu_seconds", r.cpu_seconds},
+          {"cpu_seconds_per_simulated_second", r.cpu_seconds_per_simulated_second},
           {"first_broad_seconds", r.first_broad_seconds},
           {"counters", counters_json(r.counters)},
           {"rebuilds", r.rebuilds},

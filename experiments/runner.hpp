@@ -84,6 +84,11 @@ struct RunRecord {
   double narrow_seconds = 0.0;         ///< exact narrow phase (median of repeats)
   double total_seconds = 0.0;          ///< the whole run incl. state evaluation (median)
   double seconds_per_simulated_second = 0.0;
+  /// The running thread's CPU time over the same span as total_seconds (median): the
+  /// method's work without the time the thread waited for a core, so small runs compare
+  /// on a loaded machine (ccd/util/thread_cpu_time.hpp).
+  double cpu_seconds = 0.0;
+  double cpu_seconds_per_simulated_second = 0.0;  ///< cpu_seconds / horizon
   /// The broad phase's own counters (ccd::BroadPhase::counters), each summed over steps,
   /// by name (e.g. sap's and sweep's "swaps"; none for grid).
   std::vector<std::pair<std::string, std::uint64_t>> counters;

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Charts of a ccdlab results file (ccdlab-results/2), as PNG and SVG.
 
-usage: /usr/bin/python3 scripts/plot.py RESULTS.json [-o DIR] [--format png,svg]
+usage: /usr/bin/python3 scripts/plot.py RESULTS.json [-o DIR] [--format png,svg] [--cost wall|cpu]
 
 Draws, into DIR (default: RESULTS without .json, plus "-plots"):
   missed.{png,svg}        missed fraction against dt, one line per method
@@ -12,7 +12,9 @@ Draws, into DIR (default: RESULTS without .json, plus "-plots"):
                           method's cost at its cheapest zero-miss dt (bars, labelled
                           with that dt), so that zero-miss methods stay readable
   penetration.*           penetration depth at detection against dt (discrete methods)
-Timestep axes also show the frequency 1/dt (Hz) on top. Prints each path. Needs Debian's python3-matplotlib (run with /usr/bin/python3).
+Cost is wall-clock seconds per simulated second (seconds_per_simulated_second), or with
+--cost cpu the CPU time of the thread that ran the method (cpu_seconds_per_simulated_second:
+what small runs are compared by on a loaded machine). Timestep axes also show the frequency 1/dt (Hz) on top. Prints each path. Needs Debian's python3-matplotlib (run with /usr/bin/python3).
 Reads results only; exits with status 2 on a file that is not a results file.
 """
 import argparse
@@ -28,6 +30,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 CHARTS = ("missed", "false_positives", "cost", "speed_accuracy", "penetration")
+# The record field the cost charts read and its axis label (--cost).
+COST = {"wall": ("seconds_per_simulated_second", "seconds of computation per simulated second"),
+        "cpu": ("cpu_seconds_per_simulated_second", "CPU seconds per simulated second")}
+cost_field, cost_label = COST["wall"]
+
+
+def cost_of(r):
+    return r[cost_field]
 MARKERS = "osD^v<>pP*Xh"
 
 
@@ -138,7 +148,7 @@ def speed_accuracy(res, outdir, formats):
     for i, (name, rs) in enumerate(groups.items()):
         zero = all(r["missed"] == 0 for r in rs)
         st = style(i)
-        xs = [r["seconds_per_simulated_second"] for r in rs]
+        xs = [cost_of(r) for r in rs]
         ys = [r["missed_fraction"] for r in rs]
         pts += list(zip(xs, ys))
         ax.scatter(xs, ys, s=55 if zero else 22, color=st["color"], marker="*" if zero else st["marker"],
@@ -151,7 +161,7 @@ def speed_accuracy(res, outdir, formats):
     ys = [p[1] for p in pts if p[1] > 0]
     ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
     ax.set_ylim(bottom=0)
-    ax.set_xlabel("cost (seconds of computation per simulated second)")
+    ax.set_xlabel(f"cost ({cost_label})")
     ax.set_ylabel("missed fraction of contact events")
     ax.legend(fontsize=7, loc="upper right", frameon=True, framealpha=0.85,
               ncol=1 if len(groups) <= 12 else 2)
@@ -164,8 +174,8 @@ def zero_miss_panel(ax, groups):
     rows = []
     for i, (name, rs) in enumerate(groups.items()):
         zero = [r for r in rs if r["missed"] == 0]
-        best = min(zero, key=lambda r: r["seconds_per_simulated_second"]) if zero else None
-        rows.append((best["seconds_per_simulated_second"] if best else float("inf"), name, i, best))
+        best = min(zero, key=cost_of) if zero else None
+        rows.append((cost_of(best) if best else float("inf"), name, i, best))
     rows.sort(key=lambda row: (row[0], row[1]))
     finite = [row[0] for row in rows if row[0] != float("inf")]
     for y, (cost, name, i, best) in enumerate(rows):
@@ -181,7 +191,8 @@ def zero_miss_panel(ax, groups):
     if finite:
         ax.set_xscale("log")
         ax.set_xlim(min(finite) / 3, max(finite) * 30)
-    ax.set_xlabel("cost at the cheapest zero-miss dt (s per simulated s)")
+    ax.set_xlabel("cost at the cheapest zero-miss dt (" + ("CPU " if cost_field.startswith("cpu") else "")
+                  + "s per simulated s)")
     ax.set_title("cost of missing nothing", fontsize=10)
     ax.grid(True, axis="x", which="both", alpha=0.3)
 
@@ -191,8 +202,15 @@ def main(argv=None):
     ap.add_argument("results", help="a ccdlab-results/2 file written by `ccdlab run`")
     ap.add_argument("-o", "--output", help="output folder (default: RESULTS-plots next to the file)")
     ap.add_argument("--format", default="png,svg", help="comma-separated formats (default png,svg)")
+    ap.add_argument("--cost", default="wall", choices=sorted(COST),
+                    help="cost axis: wall-clock (default) or the method thread's CPU time")
     args = ap.parse_args(argv)
+    global cost_field, cost_label
+    cost_field, cost_label = COST[args.cost]
     res = load(args.results)
+    for i, r in enumerate(res["records"]):
+        if cost_field not in r:
+            fail(f"{args.results}: records[{i}].{cost_field}: missing field (--cost {args.cost})")
     outdir = args.output or os.path.splitext(args.results)[0] + "-plots"
     formats = [f for f in args.format.split(",") if f]
     for f in formats:
@@ -204,8 +222,8 @@ def main(argv=None):
                         "missed fraction of contact events")
     paths += line_chart(res, outdir, formats, "false_positives", lambda r: r["false_positives_per_step"],
                         "false positives per step")
-    paths += line_chart(res, outdir, formats, "cost", lambda r: r["seconds_per_simulated_second"],
-                        "cost (s per simulated s)", yscale="log")
+    paths += line_chart(res, outdir, formats, "cost", cost_of,
+                        "cost (" + ("CPU " if args.cost == "cpu" else "") + "s per simulated s)", yscale="log")
     paths += speed_accuracy(res, outdir, formats)
     discrete = {r["method"] for r in res["records"] if not r["continuous"]}
     if discrete:

@@ -69,7 +69,10 @@ for r in "${results[@]}"; do
   echo "$r"
   # plot.py draws sphere and rigid results; cloth results are drawn by plot_study.py only.
   [[ $name == cloth ]] && continue
-  "$python" "$root/scripts/plot.py" "$r" --format png -o "${r%.json}-plots"
+  # Scheduling compares runs of a few milliseconds: by CPU time (docs/studies.md).
+  cost=wall
+  [[ $name == scheduling ]] && cost=cpu
+  "$python" "$root/scripts/plot.py" "$r" --format png --cost "$cost" -o "${r%.json}-plots"
 done
 "$python" "$root/scripts/plot_study.py" "$name" "${results[@]}" -o "$out/plots" --ccdlab "$ccdlab" \
   | tee "$out/summary.md"

@@ -1,10 +1,12 @@
 #include <ccd/pipeline/earliest_scheduler.hpp>
 
+#include <bounds/speed_earliest.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <queue>
 #include <stdexcept>
 
@@ -69,6 +71,8 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
     throw std::invalid_argument("the earliest scheduler needs stale in (0, 1]");
   if (!(options.reach >= 0.0 && std::isfinite(options.reach)))
     throw std::invalid_argument("the earliest scheduler needs a finite reach >= 0");
+  if (!(options.chunk >= 0.0 && std::isfinite(options.chunk)))
+    throw std::invalid_argument("the earliest scheduler needs a finite chunk >= 0");
 }
 
 bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
@@ -117,6 +121,13 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
     if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
+  };
+  // A bound on body i's speed over [t, t1] (state at t set), as the bound's knowledge
+  // allows: the exact pieces' largest speed, or |v(t)| + A (t1 - t) (walls keep the speed).
+  const auto speed_bound = [&](std::uint32_t i, double t, double t1) {
+    if (knowledge_ == Knowledge::Exact) return max_speed(motion, i, t, t1);
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    return (states[i].velocity.norm() + acceleration_bound * (t1 - t)) * (1.0 + 8.0 * eps);
   };
   // Speed-adapted windows: the length of body i's window from its state (set at its start).
   double reach_length = 0.0;
@@ -242,6 +253,43 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     const Window wa = bound_->window(e.a);
     const Window wb = bound_->window(e.b);
     const double to = std::min(wa.t1, wb.t1);
+    if (options_.recheck) {
+      // A speed re-check from both bodies' states now (no bound built), then the narrow
+      // phase from its earliest time over one chunk; the pair comes back at the chunk's end.
+      watch.start();
+      state_at(e.a, e.t);
+      state_at(e.b, e.t);
+      const SpeedBall ba{states[e.a].position, e.t, speed_bound(e.a, e.t, to), states[e.a].radius};
+      const SpeedBall bb{states[e.b].position, e.t, speed_bound(e.b, e.t, to), states[e.b].radius};
+      const double from = std::max(e.t, speed_earliest(ba, bb));
+      ++stats_.pair_checks;
+      ++stats_.rechecks;
+      watch.stop(local.bound);
+      if (from > to) continue;  // no contact possible in the rest of the common window
+      ++stats_.passed;
+      // The chunk: the time in which the pair's distance may change by `chunk` x the sum of
+      // their radii (at least the rest of the window when neither may move).
+      const double closing = ba.speed + bb.speed;
+      const double h = options_.chunk > 0.0 && closing > 0.0 ? options_.chunk * (ba.radius + bb.radius) / closing
+                                                              : std::numeric_limits<double>::infinity();
+      if (from < to && from >= e.t + h) {  // far enough: look again when they may touch
+        queue.push({from, Kind::Check, e.a, e.b, e.va, e.vb, e.since});
+        continue;
+      }
+      const double until = from + h < to ? from + h : to;
+      ++stats_.narrow_calls;
+      const RigidMotion* rigid = options_.rigid;
+      const NarrowInput in{&motion, states, {}, from, until, false, rigid};
+      watch.start();
+      const ContactResult c =
+          rigid ? table_->find(rigid->kind(e.a), rigid->kind(e.b))(in, e.a, e.b) : narrow_(in, e.a, e.b);
+      watch.stop(local.narrow);
+      // A contact ends the pair's window as a narrow call over [from, to] would have: its
+      // first contact there is this one.
+      if (c.found()) contacts.push_back({{e.a, e.b}, c, from, to});
+      else if (until < to) queue.push({until, Kind::Check, e.a, e.b, e.va, e.vb, e.since});
+      continue;
+    }
     if (options_.refresh_bodies) {
       batch.clear();
       if (refine && e.t - wa.t0 > stale_age) batch.push_back(e.a);

@@ -30,6 +30,17 @@
 // it, or a refinement covers the rest of it from the check time on. A refinement advances
 // the age of the pair's bounds by at least stale x dt, so a pair is refined at most
 // T / (stale dt) times.
+// With `recheck` a due check at t is re-checked instead of refined: from both bodies'
+// states at t and speed bounds over [t, w1] (w1 the common window's end; the exact pieces'
+// largest speed, or |v(t)| + A (w1 - t) for a bound that knows only A), no contact is
+// possible before e = t + gap / (s_a + s_b) (bounds/speed_earliest.hpp). A later e (a
+// chunk or more ahead) re-queues the check at e; otherwise the narrow phase covers
+// [e, min(e + h, w1)], h = chunk x (r_a + r_b) / (s_a + s_b), and the pair comes back at
+// its end. Time moves on by at least h per check, so a pair costs at most (w1 - t) / h + 1
+// narrow calls per window, and no bound is built beyond one per body and window.
+// Coverage then tiles the common window with [t, e) (no contact possible) and narrow
+// chunks. A found contact ends the pair's window (reported over [e, w1], as one narrow
+// call from e to w1 would have found it).
 // Contacts are reported with the narrow call's interval [from, to]: the runner credits
 // the events of the pair that start in it (as a fixed step credits the events that start
 // in the step).
@@ -64,6 +75,15 @@ struct ScheduleOptions {
   /// false: a refinement builds the pair's own bounds (a second bound instance); true: it
   /// refreshes the two bodies' bounds, with a broad-phase update and a re-test of their pairs.
   bool refresh_bodies = false;
+  /// true: a due pair check is first re-checked from both bodies' states at the check time
+  /// with speed bounds over the rest of the common window (bounds/speed_earliest.hpp; no
+  /// bound is built, `stale` and `refresh_bodies` are not used); the narrow phase then runs
+  /// from that earliest time over one chunk (below), and the pair is re-checked at the
+  /// chunk's end; an earliest time a chunk or more ahead re-queues the check there instead.
+  bool recheck = false;
+  /// With `recheck`: a chunk is the time in which the pair's distance may change by
+  /// chunk x (r_a + r_b) at the speed bounds; 0: the rest of the common window.
+  double chunk = 2.0;
   /// Rigid scenes: shapes and spins, so that the narrow phase is looked up per pair of shape
   /// kinds (as in StepPipeline); null for sphere scenes.
   const RigidMotion* rigid = nullptr;
@@ -77,7 +97,8 @@ struct ScheduledContact {
 };
 
 struct ScheduleStats {
-  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls)
+  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls and speed re-checks)
+  std::uint64_t rechecks = 0;      ///< of those, speed re-checks (ScheduleOptions::recheck)
   std::uint64_t passed = 0;        ///< of those, Possible
   std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
   std::uint64_t refreshes = 0;     ///< body bounds built (the first one of every body and the

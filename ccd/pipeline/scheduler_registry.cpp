@@ -27,6 +27,15 @@ constexpr ParameterSpec kEarliestParameters[] = {
      "0: a refinement builds the pair's own bounds; 1: it refreshes both bodies' bounds (broad-phase update, "
      "every pair of theirs re-tested)",
      ParameterKind::Integer, {0.0, 1.0}},
+    {"recheck", 0.0,
+     "1: a due pair is first re-checked with speed bounds from both bodies' states at the check time (no bound "
+     "built; stale and refresh_bodies unused), then the narrow phase runs from that earliest time over one chunk "
+     "and the pair is re-checked at its end",
+     ParameterKind::Integer, {0.0, 1.0}},
+    {"chunk", 2.0,
+     "with recheck: a narrow call covers the time in which the pair's distance may change by chunk x the sum of "
+     "their radii; 0: the rest of the common window",
+     ParameterKind::Real, {0.0, 1e9}},
 };
 
 const SchedulerInfo kSchedulers[] = {

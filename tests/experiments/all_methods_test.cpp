@@ -3,7 +3,7 @@
 // methods detect exactly the events that contain a sample time, and every method's
 // self-check passes. Iterates the registries, so a new bound or broad phase is covered;
 // every space-time method also runs under the earliest scheduler (BOUND/BROADPHASE@earliest),
-// with windows of dt and with speed-adapted ones (`reach`).
+// with windows of dt, with speed-adapted ones (`reach`) and with speed re-checks (`recheck`).
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
 
@@ -40,6 +40,7 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
   for (const std::string& m : ccdlab::scheduled_method_names()) {
     names.push_back(m);
     names.push_back(m + ":reach=1");  // speed-adapted windows: the broad phases' incremental updates
+    names.push_back(m + ":recheck=1");  // speed re-checks and chunked narrow calls
   }
   for (const std::string& name : names) {
     INFO(c.generator << " " << name);

@@ -256,3 +256,19 @@ TEST_CASE("conservative in records: the guarantee as the method ran", "[runner]"
   CHECK_FALSE(f.run("horn:4/grid", 0.5, 4.0).conservative);  // A below it: no guarantee
   CHECK(f.run("aabb/grid", 0.25, 8.0).hz == 4.0);
 }
+
+TEST_CASE("records carry the CPU time of the method's work beside its wall time", "[runner]") {
+  const Fixture f(head_on());
+  // Small steps so that the run takes measurable CPU time; a fixed and a scheduled method.
+  for (const char* method : {"capsule/brute", "capsule/brute@earliest"}) {
+    INFO(method);
+    const ccdlab::RunRecord r = f.run(method, 1.0 / 4096.0);
+    CHECK(r.cpu_seconds > 0.0);
+    // One thread cannot use more CPU than wall time (clock granularity aside).
+    CHECK(r.cpu_seconds <= r.total_seconds + 1e-3);
+    CHECK(r.cpu_seconds_per_simulated_second == r.cpu_seconds / f.scene.horizon);
+    const nlohmann::json j = ccdlab::to_json(r);
+    CHECK(j["cpu_seconds"] == r.cpu_seconds);
+    CHECK(j["cpu_seconds_per_simulated_second"] == r.cpu_seconds_per_simulated_second);
+  }
+}

@@ -13,7 +13,8 @@ from conftest import write_json
 
 # What a results file's counts are: every record field but the times and the environment.
 TIMES = {"bound_seconds", "broad_seconds", "narrow_seconds", "total_seconds",
-         "seconds_per_simulated_second", "first_broad_seconds"}
+         "seconds_per_simulated_second", "first_broad_seconds", "cpu_seconds",
+         "cpu_seconds_per_simulated_second"}
 
 
 def counts(results):

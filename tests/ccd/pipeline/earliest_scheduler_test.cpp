@@ -21,7 +21,8 @@ using ccd::Vec3;
 namespace {
 
 ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
-                            bool align = true, bool refresh_bodies = false, double reach = 0.0) {
+                            bool align = true, bool refresh_bodies = false, double reach = 0.0, bool recheck = false,
+                            double chunk = 2.0) {
   const ccd::BoundSpec b = ccd::parse_bound(bound);
   ccd::ScheduleOptions o;
   o.window = dt;
@@ -29,6 +30,8 @@ ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, 
   o.align = align;
   o.refresh_bodies = refresh_bodies;
   o.reach = reach;
+  o.recheck = recheck;
+  o.chunk = chunk;
   return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
 }
 
@@ -198,8 +201,172 @@ TEST_CASE("the earliest scheduler refuses what it cannot run", "[pipeline][sched
                                          ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
   o.reach = 0.0;
+  o.chunk = -1.0;  // a chunk is a multiple of a length: >= 0
+  CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
+                                         ccd::parse_broad_phase("grid").make(), o),
+                  std::invalid_argument);
+  o.chunk = 2.0;
   o.window = 0.0;
   CHECK_THROWS_AS(ccd::EarliestScheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
                                          ccd::parse_broad_phase("grid").make(), o),
                   std::invalid_argument);
+}
+
+namespace {
+
+// A scene whose exact truth has one contact event, entering at `enter` (dyadic).
+struct OneContact {
+  const char* name;
+  ccd::Scene scene;
+  double enter;
+};
+
+std::vector<OneContact> one_contact_scenes() {
+  std::vector<OneContact> out;
+  {  // head-on at relative speed 4, surfaces 3 apart: contact at 3/4
+    ccd::Scene s;
+    s.horizon = 1.0;
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(4, 0, 0), Vec3(-2, 0, 0)));
+    out.push_back({"head-on", s, 0.75});
+  }
+  {  // the same 2^40 away from the origin (every coordinate still exact)
+    ccd::Scene s;
+    s.horizon = 1.0;
+    const Vec3 far(0x1p40, -0x1p40, 0x1p40);
+    s.bodies.push_back(ccd::test::body(0.5, far + Vec3(0, 0, 0), Vec3(2, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, far + Vec3(4, 0, 0), Vec3(-2, 0, 0)));
+    out.push_back({"far from the origin", s, 0.75});
+  }
+  {  // tangent at 1/2: y offset exactly r_a + r_b, the pair touches without overlapping
+    ccd::Scene s;
+    s.horizon = 1.0;
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(-1, 0, 0), Vec3(2, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(1, 1, 0), Vec3(-2, 0, 0)));
+    out.push_back({"tangent", s, 0.5});
+  }
+  {  // contact exactly at the horizon: centres 5 apart closing at 4, R = 1
+    ccd::Scene s;
+    s.horizon = 1.0;
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(5, 0, 0), Vec3(-2, 0, 0)));
+    out.push_back({"at the horizon", s, 1.0});
+  }
+  {  // contact exactly at a wall reflection: body 0 reaches the wall x = 4 (centre 3.5) at
+     // 7/4 and turns back while body 1, on the wall's line (equal x), arrives along y.
+    ccd::Scene s;
+    s.horizon = 2.0;
+    s.box = ccd::WallBox{Vec3(-8, -8, -8), Vec3(4, 8, 8)};
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(3.5, -4.5, 0), Vec3(0, 2, 0)));
+    out.push_back({"at a wall reflection", s, 1.75});
+  }
+  {  // an acceleration change: body 0 rests until 1/2, then accelerates at 8 towards body 1
+     // (at rest, surfaces 1 apart): 4 (t - 1/2)^2 = 1 at t = 1
+    ccd::Scene s;
+    s.horizon = 2.0;
+    ccd::Body b = ccd::test::body(0.5, Vec3(0, 0, 0));
+    b.acceleration_changes.push_back({0.5, Vec3(8, 0, 0)});
+    s.bodies.push_back(b);
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(2, 0, 0)));
+    out.push_back({"after an acceleration change", s, 1.0});
+  }
+  {  // t = 0: the pair touches at the start, then separates; a third body arrives at 1/4
+    ccd::Scene s;
+    s.horizon = 1.0;
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(0, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(1, 0, 0), Vec3(1, 0, 0)));
+    s.bodies.push_back(ccd::test::body(0.5, Vec3(0, -3, 0), Vec3(0, 8, 0)));
+    out.push_back({"touching at t = 0", s, 0.25});
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("speed re-checks miss nothing on adversarial dyadic scenes", "[pipeline][scheduler][zero_miss]") {
+  for (const OneContact& c : one_contact_scenes()) {
+    const ccd::Trajectories traj(c.scene);
+    const auto events = ccd::compute_truth(traj);
+    std::size_t later = 0;  // events entering after t = 0: exactly the one at c.enter
+    for (const ccd::ContactEvent& e : events)
+      if (e.enter > 0.0) {
+        ++later;
+        CHECK(e.enter == c.enter);
+      }
+    REQUIRE(later == 1);
+    const double A = c.scene.max_acceleration();
+    for (const char* bound : {"horn:4", "capsule", "horn_sat:3", "swept_aabb", "enclosing_sphere"}) {
+      for (const char* broad : {"brute", "grid"}) {
+        for (const double chunk : {0.0, 2.0, 1.0 / 16.0}) {
+          for (const double dt : {2.0, 0.25, 0.3}) {
+            INFO(c.name << ": " << bound << "/" << broad << " chunk " << chunk << " dt " << dt);
+            ccd::EarliestScheduler sched = make(bound, broad, dt, 0.25, true, false, 0.0, true, chunk);
+            std::vector<ccd::ScheduledContact> contacts;
+            REQUIRE(sched.run(traj, c.scene.horizon, A, c.scene.box, contacts));
+            CHECK(undetected(events, contacts, 1e-9 * c.scene.horizon) == 0);
+            // The contact is found at its exact time by a call that starts no later.
+            bool exact = false;
+            for (const ccd::ScheduledContact& sc : contacts) {
+              CHECK(sc.from <= sc.contact.toi);
+              CHECK(sc.contact.toi <= sc.to);
+              exact = exact || (sc.from <= c.enter && sc.contact.toi == Approx(c.enter).margin(1e-12));
+            }
+            CHECK(exact);
+            const ccd::ScheduleStats& st = sched.stats();
+            CHECK(st.rechecks <= st.pair_checks);
+            // No bound is built beyond one per body and window (no refinement).
+            CHECK(st.refreshes <= traj.size() * static_cast<std::uint64_t>(std::ceil(c.scene.horizon / dt)));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST_CASE("speed re-checks: a close pair moving in parallel costs a bounded number of checks", "[pipeline][scheduler]") {
+  // Same velocity (20, 0, 0), centres 1 + 2^-10 apart (R = 1): they never touch. Speed
+  // bounds see a closing speed of 40, so each chunk (chunk x R / 40) ends with a re-check;
+  // the pair costs at most horizon / chunk-time narrow calls and twice as many checks.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(20, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 1.0 + 0x1p-10, 0), Vec3(20, 0, 0)));
+  const ccd::Trajectories traj(s);
+  REQUIRE(ccd::compute_truth(traj).empty());
+  // The capsules and the swept boxes stay 2^-10 apart (their tests are Disjoint); the
+  // enclosing spheres of the window meet, so the pair passes and the re-checks do the work.
+  for (const double chunk : {2.0, 8.0}) {
+    INFO("chunk " << chunk);
+    ccd::EarliestScheduler sched = make("enclosing_sphere", "brute", 1.0, 0.25, true, false, 0.0, true, chunk);
+    std::vector<ccd::ScheduledContact> contacts;
+    REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
+    CHECK(contacts.empty());
+    const double chunks = s.horizon / (chunk * 1.0 / 40.0);
+    CHECK(sched.stats().narrow_calls >= 1);
+    CHECK(double(sched.stats().narrow_calls) <= chunks + 1.0);
+    CHECK(double(sched.stats().pair_checks) <= 2.0 * chunks + 3.0);
+    CHECK(sched.stats().refreshes == 2);  // one bound per body: nothing rebuilt
+  }
+}
+
+TEST_CASE("speed re-checks: far pairs skip ahead, the narrow phase covers only the approach", "[pipeline][scheduler]") {
+  // Head-on at relative speed 4 from surfaces 3 apart, dt = the horizon: one bound per body,
+  // the capsule's pair test passes at t = 0; the re-check skips to 3/4 (the exact contact:
+  // speeds are exact here), and one narrow call over a chunk from there finds it.
+  ccd::Scene s;
+  s.horizon = 1.0;
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+  s.bodies.push_back(ccd::test::body(0.5, Vec3(4, 0, 0), Vec3(-2, 0, 0)));
+  const ccd::Trajectories traj(s);
+  ccd::EarliestScheduler sched = make("capsule", "brute", 1.0, 0.25, true, false, 0.0, true, 2.0);
+  std::vector<ccd::ScheduledContact> contacts;
+  REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
+  REQUIRE(contacts.size() == 1);
+  CHECK(contacts[0].contact.toi == 0.75);
+  CHECK(contacts[0].from <= 0.75);
+  CHECK(contacts[0].from >= 0.75 - 1e-12);  // the re-check's earliest, up to its rounding margin
+  CHECK(sched.stats().narrow_calls == 1);
+  CHECK(sched.stats().refreshes == 2);
+  CHECK(sched.stats().pair_checks <= 3);  // the bound's test and at most two re-checks
 }

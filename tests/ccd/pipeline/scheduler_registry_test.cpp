@@ -17,6 +17,11 @@ TEST_CASE("parse_scheduler resolves names and options", "[pipeline][scheduler][r
   CHECK(ccd::parse_scheduler("earliest:0.5").options.number("stale") == 0.5);  // first option
   CHECK(ccd::parse_scheduler("earliest:stale=1,align=0").options.integer("align") == 0);
   CHECK(ccd::parse_scheduler("fixed:narrow_from_earliest=1").options.integer("narrow_from_earliest") == 1);
+  CHECK(e.options.integer("recheck") == 0);  // speed re-checks are opt-in
+  CHECK(e.options.number("chunk") == 2.0);
+  const ccd::SchedulerSpec r = ccd::parse_scheduler("earliest:recheck=1,chunk=0");
+  CHECK(r.options.integer("recheck") == 1);
+  CHECK(r.options.number("chunk") == 0.0);
   SECTION("bad names and values name the part and list the valid ones") {
     try {
       ccd::parse_scheduler("hubbard");
@@ -27,6 +32,8 @@ TEST_CASE("parse_scheduler resolves names and options", "[pipeline][scheduler][r
     CHECK_THROWS_AS(ccd::parse_scheduler("earliest:stale=0"), std::invalid_argument);  // (0, 1]
     CHECK_THROWS_AS(ccd::parse_scheduler("earliest:stale=1.5"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_scheduler("earliest:align=2"), std::invalid_argument);
+    CHECK_THROWS_AS(ccd::parse_scheduler("earliest:recheck=2"), std::invalid_argument);
+    CHECK_THROWS_AS(ccd::parse_scheduler("earliest:chunk=-1"), std::invalid_argument);
     CHECK_THROWS_AS(ccd::parse_scheduler("fixed:stale=0.5"), std::invalid_argument);
   }
 }

@@ -1,0 +1,188 @@
+// The earliest-contact scheduler (ccd/pipeline/earliest_scheduler.hpp) against fixed steps
+// of the same bounds (ccd/pipeline/step_pipeline.hpp), over a whole horizon of 1 s, on two
+// scenes of the scheduling study (docs/studies.md), built here with a fixed seed:
+//  - sparse_gas: 2,000 spheres of radius 1 at volume fraction 0.002 in a walled cube,
+//    velocities uniform in the ball of radius 20;
+//  - bullets: 950 spheres of radius 1 at volume fraction 0.05 moving at up to 1, and 50
+//    bullets of radius 1/20 at 200.
+// Each benchmark is one run over the horizon; its time is the thread's CPU time per run
+// (manual time: robust to other jobs on a shared machine), the counter wall_ms the wall
+// time. Counters: pair_checks (bound pair tests; for fixed steps the broad phase's
+// candidates, each tested), narrow_calls (for fixed steps the pairs that passed),
+// refreshes (bounds built; bodies x steps for fixed steps), contacts.
+//
+//   scheduler_bench [benchmark flags]   e.g. --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
+#include <bounds/registry.hpp>
+#include <ccd/broad_phase/registry.hpp>
+#include <ccd/motion/state_cursor.hpp>
+#include <ccd/pipeline/earliest_scheduler.hpp>
+#include <ccd/pipeline/step_pipeline.hpp>
+#include <ccd/util/thread_cpu_time.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+// n spheres of radius 1 at volume fraction `fraction` (of the n - bullets field bodies) in a
+// walled cube around the origin, velocities uniform in the ball of radius `speed`; the
+// first `bullets` of radius 1/20 at `bullet_speed`.
+ccd::Scene make_scene(int n, double fraction, double speed, int bullets, double bullet_speed) {
+  ccd::Scene s;
+  s.horizon = 1.0;
+  const double volume = (n - bullets) * 4.0 / 3.0 * std::numbers::pi / fraction;
+  const double half = 0.5 * std::cbrt(volume);
+  s.box = ccd::WallBox{ccd::Vec3::Constant(-half), ccd::Vec3::Constant(half)};
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto in_ball = [&] {
+    ccd::Vec3 v;
+    do v = ccd::Vec3(u(rng), u(rng), u(rng));
+    while (v.squaredNorm() > 1.0);
+    return v;
+  };
+  for (int i = 0; i < n; ++i) {
+    ccd::Body b;
+    b.radius = i < bullets ? 0.05 : 1.0;
+    b.position = (half - b.radius) * ccd::Vec3(u(rng), u(rng), u(rng));
+    b.velocity = i < bullets ? bullet_speed * in_ball().normalized() : speed * in_ball();
+    s.bodies.push_back(b);
+  }
+  return s;
+}
+
+struct Fixture {
+  ccd::Scene scene;
+  ccd::Trajectories motion;
+  explicit Fixture(ccd::Scene s) : scene(std::move(s)), motion(scene) {}
+};
+
+const Fixture& sparse_gas() {
+  static const Fixture f(make_scene(2000, 0.002, 20.0, 0, 0.0));
+  return f;
+}
+const Fixture& bullets() {
+  static const Fixture f(make_scene(1000, 0.05, 1.0, 50, 200.0));
+  return f;
+}
+
+struct Costs {
+  double pair_checks = 0, narrow_calls = 0, refreshes = 0, contacts = 0;
+};
+
+void report(benchmark::State& state, double cpu, double wall, const Costs& c) {
+  state.SetIterationTime(cpu);
+  state.counters["wall_ms"] = wall * 1e3;
+  state.counters["pair_checks"] = c.pair_checks;
+  state.counters["narrow_calls"] = c.narrow_calls;
+  state.counters["refreshes"] = c.refreshes;
+  state.counters["contacts"] = c.contacts;
+}
+
+// Fixed steps of dt over the horizon (the runner's loop, without its bookkeeping).
+void fixed(benchmark::State& state, const Fixture& (*scene)(), std::string method, double dt) {
+  const Fixture& f = scene();
+  const std::size_t slash = method.find('/');
+  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
+  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
+  for (auto _ : state) {
+    ccd::StepPipeline pipeline(bound.make(), bound.info->knowledge, broad.make());
+    ccd::StateCursor cursor(f.motion);
+    std::vector<ccd::BodyState> states;
+    ccd::StepResult step;
+    ccd::StepContext ctx;
+    ctx.acceleration_bound = f.scene.max_acceleration();
+    ctx.walls = f.scene.box;
+    ctx.exact = bound.info->knowledge == ccd::Knowledge::Exact ? &f.motion : nullptr;
+    Costs c;
+    const auto wall0 = std::chrono::steady_clock::now();
+    const double cpu0 = ccd::thread_cpu_seconds();
+    for (std::uint64_t k = 0; double(k) * dt < f.scene.horizon; ++k) {
+      ctx.t0 = double(k) * dt;
+      ctx.t1 = std::min(double(k + 1) * dt, f.scene.horizon);
+      cursor.evaluate(ctx.t0, states);
+      ctx.start = states;
+      pipeline.run(ctx, f.motion, step, nullptr, cursor.pieces());
+      c.pair_checks += double(step.candidates.size());
+      c.narrow_calls += double(step.passed.size());
+      c.refreshes += double(f.motion.size());
+      c.contacts += double(step.contacts.size());
+    }
+    const double cpu = ccd::thread_cpu_seconds() - cpu0;
+    report(state, cpu, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(), c);
+  }
+}
+
+// The earliest scheduler with windows of at most dt and the given options.
+void earliest(benchmark::State& state, const Fixture& (*scene)(), std::string method, double dt,
+              ccd::ScheduleOptions options) {
+  const Fixture& f = scene();
+  const std::size_t slash = method.find('/');
+  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
+  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
+  options.window = dt;
+  std::vector<ccd::ScheduledContact> contacts;
+  for (auto _ : state) {
+    ccd::EarliestScheduler sched(bound.make(), bound.make(), bound.info->knowledge, broad.make(), options);
+    const auto wall0 = std::chrono::steady_clock::now();
+    const double cpu0 = ccd::thread_cpu_seconds();
+    sched.run(f.motion, f.scene.horizon, f.scene.max_acceleration(), f.scene.box, contacts);
+    const double cpu = ccd::thread_cpu_seconds() - cpu0;
+    const ccd::ScheduleStats& st = sched.stats();
+    report(state, cpu, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
+           {double(st.pair_checks), double(st.narrow_calls), double(st.refreshes), double(contacts.size())});
+  }
+}
+
+ccd::ScheduleOptions opts(double stale, double reach, bool recheck, double chunk) {
+  ccd::ScheduleOptions o;
+  o.stale = stale;
+  o.reach = reach;
+  o.recheck = recheck;
+  o.chunk = chunk;
+  return o;
+}
+
+void register_all() {
+  const auto fix = [](const char* name, const Fixture& (*scene)(), const char* method, double dt) {
+    benchmark::RegisterBenchmark(name, fixed, scene, std::string(method), dt)->UseManualTime()->Unit(benchmark::kMillisecond);
+  };
+  const auto sched = [](const char* name, const Fixture& (*scene)(), const char* method, double dt,
+                        ccd::ScheduleOptions o) {
+    benchmark::RegisterBenchmark(name, earliest, scene, std::string(method), dt, o)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond);
+  };
+  // Sparse gas: the fixed methods' best dt is the horizon (one bound per body).
+  fix("sparse_gas/fixed/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", 1.0);
+  fix("sparse_gas/fixed/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0);
+  sched("sparse_gas/earliest/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(0.25, 0, false, 2));
+  sched("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(0.25, 0, true, 2));
+  sched("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0,
+        opts(0.25, 0, true, 0));
+  // Bullets: fixed steps need a dt small enough for the bullets.
+  fix("bullets/fixed/capsule/grid/dt=0.03", bullets, "capsule/grid", 0.03);
+  fix("bullets/fixed/capsule/grid/dt=0.01", bullets, "capsule/grid", 0.01);
+  sched("bullets/earliest:reach=16/capsule/grid/dt=1", bullets, "capsule/grid", 1.0, opts(0.25, 16, false, 2));
+  sched("bullets/earliest:reach=16,recheck=1/capsule/grid/dt=1", bullets, "capsule/grid", 1.0,
+        opts(0.25, 16, true, 2));
+  sched("bullets/earliest:reach=16,recheck=1,chunk=0/capsule/grid/dt=1", bullets, "capsule/grid", 1.0,
+        opts(0.25, 16, true, 0));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
