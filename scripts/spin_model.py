@@ -74,10 +74,10 @@ def main():
     os.makedirs(a.o, exist_ok=True)
     shapes = ["sticks"] if a.quick else ["sticks", "plates", "crates"]
     elongations = [2, 8] if a.quick else [2, 4, 8, 16, 32]
-    horizon = 1.0 if a.quick else 4.0
+    horizon = 2.0 if a.quick else 4.0
     horizons = [horizon / 4, horizon / 2, horizon] if a.quick else [0.25, 0.5, 1.0, 2.0, 4.0]
     base = {"bodies": 40 if a.quick else 400, "horizon": horizon, "seed": 22, "spin_max": 12, "speed_max": 1,
-            "fraction": 0.05}
+            "fraction": 0.1, "overlap": 1}
     rows = []
     start = time.time()
     for gen in shapes:
