@@ -28,8 +28,6 @@ struct Reference {
   Vec3 L;
   Q4 q;
   Q4 derivative(const Q4& x) const {
-    const Quat qq(static_cast<double>(x[0]), static_cast<double>(x[1]), static_cast<double>(x[2]),
-                  static_cast<double>(x[3]));
     // Rotation matrix in long double.
     const LD w = x[0], a = x[1], b = x[2], c = x[3];
     const LD R[3][3] = {{1 - 2 * (b * b + c * c), 2 * (a * b - c * w), 2 * (a * c + b * w)},
@@ -39,7 +37,6 @@ struct Reference {
     for (int i = 0; i < 3; ++i) M[i] = R[0][i] * L[0] + R[1][i] * L[1] + R[2][i] * L[2];
     for (int i = 0; i < 3; ++i) wb[i] = inertia_inv(i, 0) * M[0] + inertia_inv(i, 1) * M[1] + inertia_inv(i, 2) * M[2];
     for (int i = 0; i < 3; ++i) ww[i] = R[i][0] * wb[0] + R[i][1] * wb[1] + R[i][2] * wb[2];
-    (void)qq;
     // (0, v) (w, u) = (-v.u, w v + v x u)
     return {-(ww[0] * a + ww[1] * b + ww[2] * c) / 2, (w * ww[0] + ww[1] * c - ww[2] * b) / 2,
             (w * ww[1] + ww[2] * a - ww[0] * c) / 2, (w * ww[2] + ww[0] * b - ww[1] * a) / 2};
