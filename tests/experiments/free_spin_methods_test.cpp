@@ -118,7 +118,13 @@ TEST_CASE("every method on freely tumbling bodies: zero misses for conservative 
     names.emplace_back(scheduled);
   for (const std::string& name : names) {
     INFO(name);
-    const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
+    const ccdlab::MethodSpec spec = ccdlab::parse_method(name);
+#ifdef CCDLAB_SANITIZED
+    // Under the sanitizers (several times slower) the continuous methods only, and one
+    // discrete one: the zero-miss guarantee is what this test is for.
+    if (!spec.continuous() && name != "sphere/brute") continue;
+#endif
+    const ccdlab::RunRecord r = ccdlab::run_method(in, spec, c.dt);
     CHECK(r.events == truth.events().size());
     CHECK(r.initial_contacts + r.detected + r.missed == r.events);
     CHECK(r.self_check_unexpected == 0);
@@ -126,7 +132,11 @@ TEST_CASE("every method on freely tumbling bodies: zero misses for conservative 
     if (r.continuous && r.conservative) CHECK(r.missed == 0);
     if (!r.continuous && r.missed > 0) sampling_missed = true;
   }
+#ifndef CCDLAB_SANITIZED
   if (std::string(c.name) != "tumbling box") CHECK(sampling_missed);
+#else
+  (void)sampling_missed;
+#endif
 }
 
 TEST_CASE("a free tumble differs from the constant spin it starts with", "[runner][rigid][free_spin]") {
