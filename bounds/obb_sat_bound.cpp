@@ -57,7 +57,9 @@ Aabb ObbSatBound::build(const StepContext& ctx, std::size_t i) {
       o.axes = body_rotation(*ctx.rigid, i, mid);
       const double omega = ctx.rigid->rotations().empty() ? 0.0 : ctx.rigid->rotations().max_omega(i, s0, s1);
       const double theta = std::min(omega * std::max(mid - s0, s1 - mid), 2.0);
-      growth = theta * R * (1.0 + 16.0 * kEps);
+      // A free tumble's orientation at `mid` is evaluated within a stated error (0 for
+      // constant spins): every point may be that much further out.
+      growth = theta * R * (1.0 + 16.0 * kEps) + ctx.rigid->pose_error(i, mid);
     } else {
       o.axes.setIdentity();
     }

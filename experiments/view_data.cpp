@@ -9,6 +9,9 @@
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/shape/shape_kind.hpp>
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -132,8 +135,27 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
     if (!rot.empty()) {
       json r = json::array();
       for (const ccd::RotationPiece& q : rot.pieces(i)) {
-        for (double x : {q.t0, q.t1, q.q0.w(), q.q0.x(), q.q0.y(), q.q0.z()}) r.push_back(shown(x));
-        append(r, q.omega);
+        if (q.constant_spin()) {
+          for (double x : {q.t0, q.t1, q.q0.w(), q.q0.x(), q.q0.y(), q.q0.z()}) r.push_back(shown(x));
+          append(r, q.omega);
+          continue;
+        }
+        // A free tumble: sampled poses (at most 0.05 rad apart), each pair joined by the
+        // constant spin that turns one into the next.
+        const double turn = q.max_rate() * (q.t1 - q.t0);
+        const int steps = static_cast<int>(std::clamp(std::ceil(turn / 0.05), 1.0, 100000.0));
+        ccd::Quat a = q.orientation(q.t0);
+        for (int k = 0; k < steps; ++k) {
+          const double s0 = q.t0 + (q.t1 - q.t0) * k / steps, s1 = k + 1 == steps ? q.t1 : q.t0 + (q.t1 - q.t0) * (k + 1) / steps;
+          const ccd::Quat b = q.orientation(s1);
+          ccd::Quat d = b * a.conjugate();
+          if (d.w() < 0.0) d.coeffs() = -d.coeffs();  // the short way round
+          const Eigen::AngleAxisd step(d);
+          const ccd::Vec3 omega = s1 > s0 ? ccd::Vec3(step.axis() * (step.angle() / (s1 - s0))) : ccd::Vec3::Zero();
+          for (double x : {s0, s1, a.w(), a.x(), a.y(), a.z()}) r.push_back(shown(x));
+          append(r, omega);
+          a = b;
+        }
       }
       rotations.push_back(std::move(r));
     }

@@ -14,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ccdlab=${CCDLAB:-$root/build/ccdlab}
 python=/usr/bin/python3
-studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling spinning fit cloth"
+studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling spinning fit cloth spin-model"
 
 usage() {
   echo "usage: scripts/study.sh NAME [--threads N] [--plot-only] [--publish]   (NAME: ${studies// /, })" >&2
@@ -41,6 +41,23 @@ while [[ $# -gt 0 ]]; do
 done
 [[ " $studies " == *" $name "* ]] || { echo "study.sh: unknown study '$name'" >&2; usage; }
 [[ -x $ccdlab ]] || { echo "study.sh: $ccdlab not found: run ./scripts/build.sh first" >&2; exit 2; }
+
+# spin-model compares two truths (free and constant spin), not methods: its own script.
+if [[ $name == spin-model ]]; then
+  out=$root/results/studies/$name
+  [[ $plot_only == 1 ]] && { echo "study.sh: spin-model has no --plot-only (it runs in minutes)" >&2; exit 2; }
+  mkdir -p "$out"
+  CCDLAB=$ccdlab "$python" "$root/scripts/spin_model.py" -o "$out" --threads "$threads" --ccdlab "$ccdlab" \
+    | tee "$out/summary.md"
+  if [[ $publish == 1 ]]; then
+    mkdir -p "$root/docs/studies"
+    for p in "$out"/plots/*.png; do
+      cp "$p" "$root/docs/studies/"
+      echo "published docs/studies/$(basename "$p")"
+    done
+  fi
+  exit 0
+fi
 
 shopt -s nullglob
 files=("$root/data/experiments/$name.json" "$root/data/experiments/$name"-*.json)

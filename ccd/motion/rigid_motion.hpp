@@ -36,6 +36,12 @@ class RigidMotion {
   /// Radius of the ball about the centre that holds the body in every orientation.
   double enclosing_radius(std::size_t body) const { return centres_->radius(body); }
   Pose pose(std::size_t body, double t) const;
+  /// Bound on the distance between the evaluated and the exact position of any point of
+  /// `body` at t (metres): the orientation's evaluation error (a free spin's closed form,
+  /// ccd/motion/free_rotation.hpp; 0 for constant spins) times the body's reach.
+  double pose_error(std::size_t body, double t) const {
+    return rotations_.empty() ? 0.0 : rotations_.orientation_error(body, t) * centres_->radius(body);
+  }
   /// Upper bound on the speed of every point of `body` over [u0, u1] (m/s):
   /// max |centre velocity| (at the ends of each trajectory piece inside, where |v + a s|
   /// is largest) + max |omega| x enclosing radius, rounded up.

@@ -6,6 +6,7 @@
 namespace ccd {
 
 Quat RotationPiece::orientation(double t) const {
+  if (free) return free->orientation(t);
   const double w = omega.norm();
   if (w == 0.0) return q0;
   const double half = 0.5 * w * (t - t0);
@@ -19,18 +20,23 @@ Rotations::Rotations(const Scene& scene) {
   first_.reserve(scene.bodies.size() + 1);
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const RigidBody b = scene.rigid_body(i);
-    RotationPiece piece;
-    piece.t0 = 0.0;
-    piece.q0 = b.orientation;
-    piece.omega = b.angular_velocity;
+    Vec3 moments = Vec3::Ones();
+    Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+    if (b.spin == SpinModel::Free) scene.principal_inertia(i, moments, axes);
+    auto start = [&](double t0, const Quat& q0, const Vec3& omega) {
+      RotationPiece p;
+      p.t0 = t0;
+      p.q0 = q0;
+      p.omega = omega;
+      if (b.spin == SpinModel::Free && !omega.isZero(0.0))
+        p.free = std::make_shared<const FreeRotation>(moments, axes, q0, omega, t0);
+      return p;
+    };
+    RotationPiece piece = start(0.0, b.orientation, b.angular_velocity);
     for (const AngularVelocityChange& c : b.angular_velocity_changes) {
       piece.t1 = c.t;
       pieces_.push_back(piece);
-      RotationPiece next;
-      next.t0 = c.t;
-      next.q0 = piece.orientation(c.t);
-      next.omega = c.angular_velocity;
-      piece = next;
+      piece = start(c.t, piece.orientation(c.t), c.angular_velocity);
     }
     piece.t1 = scene.horizon;
     pieces_.push_back(piece);
@@ -48,7 +54,7 @@ const RotationPiece& Rotations::piece_at(std::size_t body, double t) const {
 double Rotations::max_omega(std::size_t body, double u0, double u1) const {
   double m = 0.0;
   for (const RotationPiece& p : pieces(body))
-    if (p.t1 >= u0 && p.t0 <= u1) m = std::max(m, p.omega.norm());
+    if (p.t1 >= u0 && p.t0 <= u1) m = std::max(m, p.max_rate());
   return m;
 }
 

@@ -57,7 +57,8 @@ struct BodyStep {
         turning = turning || !p.omega.isZero(0.0);
         spin = &p;
       }
-      if (covering != 1) spin = nullptr;
+      // The spin shortcuts below need a constant omega over the step (not a free tumble).
+      if (covering != 1 || !spin->constant_spin()) spin = nullptr;
     }
     if (!turning) still = motion.pose(b, t0).rotation;
     double rho2 = 0.0;
@@ -91,6 +92,12 @@ struct BodyStep {
       p.rotation = m->rotations().orientation(body, t).toRotationMatrix();
     }
     return p;
+  }
+
+  /// Bound on the distance between the evaluated and the exact position of any point at t
+  /// (metres): the orientation's evaluation error (free spin) times the reach.
+  double pose_error(double t) const {
+    return spin || !turning ? 0.0 : m->rotations().orientation_error(body, t) * (reach + proxy.radius);
   }
 
   /// The spin over the step (zero when not turning); only with `spin` or not `turning`.
@@ -141,7 +148,8 @@ SpinTerm spin_term(const BodyStep& x, const Pose& pose, const Vec3& n, double si
   }
   if (!x.spin) {
     for (const RotationPiece& p : x.m->rotations().pieces(x.body))
-      if (p.t1 >= u0 && p.t0 <= u1) s.global = std::max(s.global, n.cross(p.omega).norm());
+      if (p.t1 >= u0 && p.t0 <= u1)
+        s.global = std::max(s.global, p.constant_spin() ? n.cross(p.omega).norm() : p.max_rate());
     s.global *= x.radius;
     s.scale = s.global;
     return s;
@@ -256,10 +264,13 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
       r.status = QueryStatus::Failed;
       return r;
     }
-    if (!(d.lower > tol) || it >= options.max_iterations) break;
+    // A free tumble's orientation is evaluated within a stated error: the certified gap
+    // shrinks by what that error moves the two bodies' points (0 for constant spins).
+    const double gap = d.lower - (sa.pose_error(t) + sb.pose_error(t));
+    if (!(gap > tol) || it >= options.max_iterations) break;
     if (mu == 0.0) return r;  // nothing moves and the pair is apart: Miss
-    // The gap along d.direction is at least d.lower now: no contact before t + step.
-    const double step = advance(sa, sb, pa, pb, d.direction, d.lower, mu, t, in.t1);
+    // The gap along d.direction is at least `gap` now: no contact before t + step.
+    const double step = advance(sa, sb, pa, pb, d.direction, gap, mu, t, in.t1);
     const double next = t + step;
     if (!(next <= in.t1)) return r;  // Miss: no contact in [t0, t1]
     t = next;

@@ -1,5 +1,7 @@
 #include <ccd/scene/scene.hpp>
 
+#include <ccd/shape/mass_properties.hpp>
+
 #include <algorithm>
 
 namespace ccd {
@@ -17,6 +19,24 @@ MotionKind Scene::motion_kind() const {
   if (!any_acc) return MotionKind::Linear;
   return differ ? MotionKind::Quadratic : MotionKind::SharedAcceleration;
 }
+
+void Scene::principal_inertia(std::size_t i, Vec3& moments, Eigen::Matrix3d& axes) const {
+  const RigidBody r = rigid_body(i);
+  if (r.inertia) {
+    moments = *r.inertia;
+    axes = Eigen::Matrix3d::Identity();
+    return;
+  }
+  const bool shaped = r.shape != kNoShape;
+  MassProperties m = shaped ? mass_properties(shapes[static_cast<std::size_t>(r.shape)], 1.0)
+                            : sphere_mass_properties(bodies[i].radius, 1.0);
+  const double density = r.mass ? *r.mass / m.volume : r.density.value_or(kDefaultDensity);
+  const PrincipalInertia p = ccd::principal_inertia(density * m.inertia);
+  moments = p.moments;
+  axes = p.axes;
+}
+
+const char* to_string(SpinModel model) { return model == SpinModel::Free ? "free" : "prescribed"; }
 
 double Scene::max_acceleration() const {
   double m = 0.0;

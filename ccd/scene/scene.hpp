@@ -49,6 +49,12 @@ struct Body {
 /// RigidBody::shape of a plain sphere (no entry in Scene::shapes; its size is Body::radius).
 inline constexpr std::int32_t kNoShape = -1;
 
+/// How a shaped body turns (docs/rigid_bodies.md): `Prescribed`, the angular velocity is
+/// given and constant between its changes; `Free`, torque-free: the angular momentum is
+/// constant between changes (ccd/motion/free_rotation.hpp), the angular velocity given at
+/// t = 0 and at each change.
+enum class SpinModel : std::uint8_t { Prescribed, Free };
+
 /// A body's shape and spin: a side table of the scene (Scene::rigid), empty for sphere
 /// scenes, so Body keeps its layout.
 struct RigidBody {
@@ -56,11 +62,19 @@ struct RigidBody {
   Eigen::Quaterniond orientation{Eigen::Quaterniond::Identity()};  ///< unit, body to world
   Vec3 angular_velocity{Vec3::Zero()};  ///< world frame, rad/s
   std::vector<AngularVelocityChange> angular_velocity_changes;  ///< sorted by t, strictly increasing
+  SpinModel spin = SpinModel::Prescribed;
+  /// Mass properties (ccd/shape/mass_properties.hpp): at most one of mass (kg) and density
+  /// (kg/m^3), default density 1000; `inertia`, when given, the principal moments (kg m^2)
+  /// about the body axes, replacing the shape's.
+  std::optional<double> mass;
+  std::optional<double> density;
+  std::optional<Vec3> inertia;
 
   /// Orientation, spin or spin changes differ from the defaults.
   bool spins() const {
     return !angular_velocity.isZero(0.0) || !angular_velocity_changes.empty() ||
-           orientation.coeffs() != Eigen::Quaterniond::Identity().coeffs();
+           orientation.coeffs() != Eigen::Quaterniond::Identity().coeffs() || spin != SpinModel::Prescribed ||
+           mass || density || inertia;
   }
 };
 
@@ -110,6 +124,9 @@ struct Scene {
     return rigid.empty() || rigid[i].shape == kNoShape ? ShapeKind::Sphere
                                                         : shapes[static_cast<std::size_t>(rigid[i].shape)].kind;
   }
+  /// Body i's principal moments (kg m^2) and axes (columns, body frame): the explicit
+  /// `inertia`, else the shape's (or plain sphere's) at its mass or density.
+  void principal_inertia(std::size_t i, Vec3& moments, Eigen::Matrix3d& axes) const;
   /// Body i's shape and spin (the defaults when `rigid` is empty).
   RigidBody rigid_body(std::size_t i) const { return rigid.empty() ? RigidBody{} : rigid[i]; }
   /// Appends a body with shape and spin `r`: body.radius becomes the shape's enclosing
@@ -124,5 +141,6 @@ struct Scene {
 };
 
 const char* to_string(MotionKind kind);
+const char* to_string(SpinModel model);
 
 }  // namespace ccd

@@ -4,6 +4,7 @@
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/shape/mass_properties.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -141,7 +142,8 @@ Scene scene_from_json(const json& j, const std::string& file) {
     const std::string p = body_path(i);
     if (!b.is_object()) r.fail(p, "must be an object");
     r.only_fields(b, p, {"radius", "position", "velocity", "acceleration", "acceleration_changes", "shape",
-                         "orientation", "angular_velocity", "angular_velocity_changes"});
+                         "orientation", "angular_velocity", "angular_velocity_changes", "spin", "mass", "density",
+                         "inertia"});
     Body body;
     RigidBody rigid;
     if (auto it = b.find("shape"); it != b.end()) {
@@ -171,7 +173,8 @@ Scene scene_from_json(const json& j, const std::string& file) {
         body.acceleration_changes.push_back(ch);
       }
     }
-    for (const char* key : {"orientation", "angular_velocity", "angular_velocity_changes"})
+    for (const char* key : {"orientation", "angular_velocity", "angular_velocity_changes", "spin", "mass", "density",
+                            "inertia"})
       if (!v2 && b.contains(key)) r.fail(p + "." + key, "needs format \"ccdlab-scene/2\"");
     if (auto it = b.find("orientation"); it != b.end()) {
       const std::string op = p + ".orientation";
@@ -200,6 +203,16 @@ Scene scene_from_json(const json& j, const std::string& file) {
         rigid.angular_velocity_changes.push_back(ch);
       }
     }
+    if (auto it = b.find("spin"); it != b.end()) {
+      const std::string model = r.string(*it, p + ".spin");
+      if (model == "free")
+        rigid.spin = SpinModel::Free;
+      else if (model != "prescribed")
+        r.fail(p + ".spin", "unknown spin \"" + model + "\" (prescribed, free)");
+    }
+    if (auto it = b.find("mass"); it != b.end()) rigid.mass = r.number(*it, p + ".mass");
+    if (auto it = b.find("density"); it != b.end()) rigid.density = r.number(*it, p + ".density");
+    if (auto it = b.find("inertia"); it != b.end()) rigid.inertia = r.vec3(*it, p + ".inertia");
     if (rigid.shape != kNoShape) body.radius = s.shapes[static_cast<std::size_t>(rigid.shape)].enclosing_radius();
     s.bodies.push_back(std::move(body));
     if (v2) s.rigid.push_back(std::move(rigid));
@@ -284,6 +297,38 @@ void validate_scene(const Scene& s, const std::string& file) {
     for (int k = 0; k < 4; ++k) magnitude(rb.orientation.coeffs()[k], p + ".orientation");
     if (!(std::fabs(rb.orientation.squaredNorm() - 1.0) <= 1e-12)) r.fail(p + ".orientation", "must be a unit quaternion");
     finite3(rb.angular_velocity, p + ".angular_velocity");
+    if (rb.mass) {
+      magnitude(*rb.mass, p + ".mass");
+      if (!(*rb.mass > 0.0)) r.fail(p + ".mass", "must be > 0");
+      if (rb.density) r.fail(p + ".density", "not allowed with mass (give one of them)");
+    }
+    if (rb.density) {
+      magnitude(*rb.density, p + ".density");
+      if (!(*rb.density > 0.0)) r.fail(p + ".density", "must be > 0");
+    }
+    if (rb.inertia) {
+      const Vec3& I = *rb.inertia;
+      finite3(I, p + ".inertia");
+      for (int k = 0; k < 3; ++k)
+        if (!(I[k] > 0.0)) r.fail(p + ".inertia[" + std::to_string(k) + "]", "must be > 0 (a principal moment)");
+      for (int k = 0; k < 3; ++k)
+        if (!(I[(k + 1) % 3] + I[(k + 2) % 3] >= I[k]))
+          r.fail(p + ".inertia", "violates the triangle inequality: inertia[" + std::to_string(k) +
+                                     "] must be <= the sum of the other two moments");
+    }
+    if (rb.spin == SpinModel::Free && rb.shape != kNoShape && !rb.inertia) {
+      // A free body turns about its centre of mass, which the shape's origin must be.
+      const Shape& sh = s.shapes[static_cast<std::size_t>(rb.shape)];
+      if (sh.kind == ShapeKind::Hull) {
+        const Vec3 c = mass_properties(sh, 1.0).centre;
+        if (!(c.norm() <= 1e-9 * sh.enclosing_radius())) {
+          char text[96];
+          std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", c.x(), c.y(), c.z());
+          r.fail(p + ".spin", "free spin needs the hull's centre of mass at its origin; \"" + sh.name + "\" has it at " +
+                                  text + " (shift its points, or give inertia)");
+        }
+      }
+    }
     finite3(b.position, p + ".position");
     finite3(b.velocity, p + ".velocity");
     finite3(b.acceleration, p + ".acceleration");
@@ -382,6 +427,12 @@ json scene_to_json(const Scene& s) {
       const Eigen::Quaterniond& q = rb.orientation;
       jb["orientation"] = json::array({q.w(), q.x(), q.y(), q.z()});
       jb["angular_velocity"] = v(rb.angular_velocity);
+      // Only what differs from the defaults, so that version-2 files without these fields
+      // are written (and digested) as before.
+      if (rb.spin != SpinModel::Prescribed) jb["spin"] = to_string(rb.spin);
+      if (rb.mass) jb["mass"] = *rb.mass;
+      if (rb.density) jb["density"] = *rb.density;
+      if (rb.inertia) jb["inertia"] = v(*rb.inertia);
       if (!rb.angular_velocity_changes.empty()) {
         json ch = json::array();
         for (const AngularVelocityChange& c : rb.angular_velocity_changes)

@@ -62,14 +62,17 @@ class BracketSearch {
     }
     const ConvexDistance d = distance(mid);
     const double inf = std::numeric_limits<double>::infinity();
+    // The poses' evaluation error (free spin; 0 otherwise) moves every point by at most
+    // `slack`: the distance of the exact poses is within it of the evaluated one.
+    const double slack = m_.pose_error(a_, mid) + m_.pose_error(b_, mid);
     Label sure = Label::Unresolved;
     double reach = 0.0;
-    if (d.status == ConvexDistance::Status::Separated) {
-      sure = d.lower > band_ ? Label::Separated : Label::Near;
-      reach = L_ > 0.0 ? d.lower / L_ : inf;
-    } else if (d.status == ConvexDistance::Status::Overlapping) {
+    if (d.status == ConvexDistance::Status::Separated && (slack == 0.0 || d.lower - slack > 0.0)) {
+      sure = d.lower - slack > band_ ? Label::Separated : Label::Near;
+      reach = L_ > 0.0 ? (d.lower - slack) / L_ : inf;
+    } else if (d.status == ConvexDistance::Status::Overlapping && (slack == 0.0 || d.upper + slack < 0.0)) {
       sure = Label::Overlapping;
-      reach = L_ > 0.0 ? -d.upper / L_ : inf;
+      reach = L_ > 0.0 ? -(d.upper + slack) / L_ : inf;
     }
     if (sure == Label::Unresolved) {
       if (hi - lo <= tol_) {

@@ -17,11 +17,12 @@ extern const Command kAnimateCommand;
 extern const Command kCcdCommand;
 extern const Command kClothCommand;
 extern const Command kViewCommand;
+extern const Command kPosesCommand;
 
 std::span<const Command> commands() {
   static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
                                   kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand,
-                                  kViewCommand};
+                                  kViewCommand,  kPosesCommand};
   return table;
 }
 

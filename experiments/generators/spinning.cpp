@@ -8,11 +8,14 @@
 //   rocks:  8 random hulls of 8 points each, in the ellipsoid of semi-axes
 //           size x size / sqrt(elongation) x size / elongation.
 // Draw order per body: sphere or not (when spheres > 0), the shape (rocks), the position,
-// the velocity, the orientation (4 normal numbers), the spin axis and rate.
+// the velocity, the orientation (4 normal numbers), the spin axis and rate. With free = 1
+// the same bodies tumble torque-free from that angular velocity (docs/rigid_bodies.md).
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/placement.hpp>
 #include <experiments/generators/registry.hpp>
 #include <experiments/generators/sampling.hpp>
+
+#include <ccd/shape/mass_properties.hpp>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -38,6 +41,8 @@ constexpr ParameterSpec kParameters[] = {
     {"fraction", 0.02, "volume fraction of the box filled by the enclosing spheres", ParameterKind::Real,
      kVolumeFraction},
     kOverlapParameter,
+    {"free", 0.0, "1: torque-free spin (\"spin\": \"free\", the same draws; rocks centred on their centre of mass)",
+     ParameterKind::Integer, {0.0, 1.0, false, false}},
 };
 
 enum class Kind { Sticks, Plates, Crates, Rocks };
@@ -63,6 +68,12 @@ ccd::Scene generate(const ParameterSet& p, Kind kind) {
       }
       break;
   }
+  const bool free = p.integer("free") == 1;
+  if (free && kind == Kind::Rocks)
+    for (ccd::Shape& s : shapes) {  // a free body turns about its centre of mass
+      const ccd::Vec3 c = ccd::mass_properties(s, 1.0).centre;
+      for (ccd::Vec3& q : s.points) q -= c;
+    }
   double r_max = 0.5 * size;
   for (const ccd::Shape& s : shapes) r_max = std::max(r_max, s.enclosing_radius());
   const double side = cube_side(n, r_max * r_max * r_max, p.number("fraction"), r_max);
@@ -90,6 +101,7 @@ ccd::Scene generate(const ParameterSet& p, Kind kind) {
       Eigen::Quaterniond quat(w, q.x(), q.y(), q.z());
       r.orientation = quat.norm() > 1e-3 ? quat.normalized() : Eigen::Quaterniond::Identity();
       r.angular_velocity = rng.direction() * rng.uniform(0.0, p.number("spin_max"));
+      if (free) r.spin = ccd::SpinModel::Free;
     }
     scene.add_rigid_body(b, r);
   }
