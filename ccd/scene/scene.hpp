@@ -16,6 +16,7 @@
 // `ccdlab-scene/1` (spheres) and `ccdlab-scene/2` (shapes and spin), read and written by
 // ccd/scene/scene_io.hpp (docs/formats.md).
 #include <ccd/geometry/vec3.hpp>
+#include <ccd/scene/scenery.hpp>
 #include <ccd/shape/shape.hpp>
 
 #include <Eigen/Geometry>
@@ -114,6 +115,8 @@ struct Scene {
   std::vector<Body> bodies;
   /// Empty (every body a plain sphere without spin), or one entry per body.
   std::vector<RigidBody> rigid;
+  /// Static polygons (ccd/scene/scenery.hpp): empty for a scene without scenery.
+  std::vector<StaticPolygon> scenery;
 
   /// Some body names a shape or spins: the scene needs `ccdlab-scene/2`.
   bool is_rigid() const;
