@@ -199,6 +199,21 @@ double median(std::vector<double> v) {
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
+// A Bounded bound knows the state at its window's start and a bound on |acceleration|:
+// a velocity change inside the window is outside its assumption (docs/bounds.md,
+// "Velocity changes"). Its guarantee holds when every change falls on a step's start
+// k dt (the step then starts from the new velocity), never under a scheduler (windows
+// start anywhere).
+bool velocity_changes_on_step_starts(const ccd::Scene& scene, double dt, bool scheduled) {
+  for (const ccd::Body& b : scene.bodies)
+    for (const ccd::VelocityChange& c : b.velocity_changes) {
+      if (scheduled) return false;
+      const double k = std::round(c.t / dt);
+      if (double(k) * dt != c.t) return false;  // the runner's step starts are double(k) * dt
+    }
+  return true;
+}
+
 }  // namespace
 
 std::uint64_t sample_count(double horizon, double dt) {
@@ -221,7 +236,8 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.continuous = method.continuous();
   r.conservative = method.continuous() && method.bound.info->conservative &&
                    (method.bound.info->knowledge != ccd::Knowledge::Bounded ||
-                    in.acceleration_bound >= in.scene->max_acceleration());
+                    (in.acceleration_bound >= in.scene->max_acceleration() &&
+                     velocity_changes_on_step_starts(*in.scene, dt, method.scheduled())));
   r.scheduled = method.scheduled();
   r.dt = dt;
   r.hz = 1.0 / dt;

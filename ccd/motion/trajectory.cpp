@@ -132,13 +132,16 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
       return a;
     };
     State st{0.0, DdVec3(b.position), DdVec3(b.velocity), own_plus_gravity(b.acceleration)};
-    std::size_t next_change = 0;
+    std::size_t next_change = 0;    // next acceleration change
+    std::size_t next_jump = 0;      // next velocity change
     double carried_window = 0.0, carried_error = 0.0;  // from the reflection that began this piece
     double pos_error = 0.0, vel_error = 0.0;           // double-double rounding carried so far
     while (true) {
-      const double t_change = next_change < b.acceleration_changes.size()
-                                  ? b.acceleration_changes[next_change].t
-                                  : horizon_;
+      // The next known break: an acceleration change, a velocity change (both at once
+      // when their times are equal), or the horizon.
+      const double t_acc = next_change < b.acceleration_changes.size() ? b.acceleration_changes[next_change].t : horizon_;
+      const double t_jump = next_jump < b.velocity_changes.size() ? b.velocity_changes[next_jump].t : horizon_;
+      const double t_change = std::min(t_acc, t_jump);
       DdVec3 a = st.a;
       int wall_axis = -1;
       int wall_dir = 0;
@@ -234,9 +237,17 @@ Trajectories::Trajectories(const Scene& scene, const TrajectoryOptions& options)
           lows_.back().edge_window = std::max(lows_.back().edge_window, carried_window);
           lows_.back().edge_error = std::max(lows_.back().edge_error, carried_error);
         }
-      } else if (next_change < b.acceleration_changes.size()) {
-        next.a = own_plus_gravity(b.acceleration_changes[next_change].acceleration);
-        ++next_change;
+      } else if (t_change < horizon_) {
+        if (next_change < b.acceleration_changes.size() && t_acc == t_change) {
+          next.a = own_plus_gravity(b.acceleration_changes[next_change].acceleration);
+          ++next_change;
+        }
+        if (next_jump < b.velocity_changes.size() && t_jump == t_change) {
+          // The velocity jumps; the position stays what the piece reached (exact, no
+          // rounding of its own: the new velocity is the scene's data).
+          next.v = DdVec3(b.velocity_changes[next_jump].velocity);
+          ++next_jump;
+        }
       } else {
         break;  // reached the horizon
       }

@@ -11,7 +11,7 @@ MotionKind Scene::motion_kind() const {
   bool any_acc = !gravity.isZero(0.0);
   bool differ = false;
   for (const Body& b : bodies) {
-    if (!b.acceleration_changes.empty()) any_change = true;
+    if (!b.acceleration_changes.empty() || !b.velocity_changes.empty()) any_change = true;
     if (!b.acceleration.isZero(0.0)) any_acc = true;
     if (b.acceleration != bodies.front().acceleration) differ = true;
   }
@@ -46,6 +46,10 @@ double Scene::max_acceleration() const {
       m = std::max(m, (c.acceleration + gravity).norm());
   }
   return m;
+}
+
+bool Scene::has_velocity_changes() const {
+  return std::any_of(bodies.begin(), bodies.end(), [](const Body& b) { return !b.velocity_changes.empty(); });
 }
 
 bool Scene::is_rigid() const {

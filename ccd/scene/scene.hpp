@@ -5,7 +5,8 @@
 // A body's centre moves as p + v t + (a + gravity) t^2 / 2. Optional elastic walls
 // (restitution 1) flip a velocity component when the centre reaches min + r or max - r
 // on that axis while moving towards it. Optional acceleration changes replace the
-// body's own acceleration at known times (gravity is always added). The exact
+// body's own acceleration at known times (gravity is always added); optional velocity
+// changes set the centre's velocity at known times (the position stays continuous). The exact
 // trajectory is built by ccd/motion/trajectory.hpp.
 //
 // Rigid bodies (docs/rigid_bodies.md): a body may name a shape of the scene's `shapes`
@@ -32,6 +33,13 @@ struct AccelerationChange {
   Vec3 acceleration{Vec3::Zero()};   ///< the body's own acceleration from t on
 };
 
+/// A jump of the centre's velocity (position continuous), like a contact impulse in a
+/// simulator or a frame of recorded motion (`ccdlab import`, docs/import.md).
+struct VelocityChange {
+  double t = 0.0;                    ///< time of the jump, in (0, horizon)
+  Vec3 velocity{Vec3::Zero()};       ///< the centre's velocity just after t
+};
+
 struct AngularVelocityChange {
   double t = 0.0;                        ///< time of the change, in (0, horizon)
   Vec3 angular_velocity{Vec3::Zero()};   ///< world frame, rad/s, from t on
@@ -45,6 +53,7 @@ struct Body {
   Vec3 velocity{Vec3::Zero()};
   Vec3 acceleration{Vec3::Zero()};   ///< the body's own; gravity is added to it
   std::vector<AccelerationChange> acceleration_changes;  ///< sorted by t, strictly increasing
+  std::vector<VelocityChange> velocity_changes{};        ///< sorted by t, strictly increasing
 };
 
 /// RigidBody::shape of a plain sphere (no entry in Scene::shapes; its size is Body::radius).
@@ -104,7 +113,7 @@ enum class MotionKind {
   Linear,                ///< no acceleration anywhere (walls may still reflect)
   SharedAcceleration,    ///< every body has the same constant acceleration (e.g. gravity)
   Quadratic,             ///< constant accelerations that differ between bodies
-  PiecewiseQuadratic,    ///< accelerations change at known times
+  PiecewiseQuadratic,    ///< accelerations or velocities change at known times
 };
 
 struct Scene {
@@ -141,6 +150,8 @@ struct Scene {
   MotionKind motion_kind() const;
   /// Largest |own acceleration + gravity| over all bodies and all their changes.
   double max_acceleration() const;
+  /// Some body has a velocity change (a jump that no acceleration bound covers).
+  bool has_velocity_changes() const;
 };
 
 const char* to_string(MotionKind kind);

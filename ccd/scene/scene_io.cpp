@@ -141,7 +141,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
     const json& b = bodies[i];
     const std::string p = body_path(i);
     if (!b.is_object()) r.fail(p, "must be an object");
-    r.only_fields(b, p, {"radius", "position", "velocity", "acceleration", "acceleration_changes", "shape",
+    r.only_fields(b, p, {"radius", "position", "velocity", "acceleration", "acceleration_changes", "velocity_changes", "shape",
                          "orientation", "angular_velocity", "angular_velocity_changes", "spin", "mass", "density",
                          "inertia"});
     Body body;
@@ -171,6 +171,20 @@ Scene scene_from_json(const json& j, const std::string& file) {
         ch.t = r.number(r.require(c, "t", kp), kp + ".t");
         ch.acceleration = r.vec3(r.require(c, "acceleration", kp), kp + ".acceleration");
         body.acceleration_changes.push_back(ch);
+      }
+    }
+    if (auto it = b.find("velocity_changes"); it != b.end()) {
+      const std::string cp = p + ".velocity_changes";
+      if (!it->is_array()) r.fail(cp, "must be an array");
+      for (std::size_t k = 0; k < it->size(); ++k) {
+        const json& c = (*it)[k];
+        const std::string kp = cp + "[" + std::to_string(k) + "]";
+        if (!c.is_object()) r.fail(kp, "must be an object with t and velocity");
+        r.only_fields(c, kp, {"t", "velocity"});
+        VelocityChange ch;
+        ch.t = r.number(r.require(c, "t", kp), kp + ".t");
+        ch.velocity = r.vec3(r.require(c, "velocity", kp), kp + ".velocity");
+        body.velocity_changes.push_back(ch);
       }
     }
     for (const char* key : {"orientation", "angular_velocity", "angular_velocity_changes", "spin", "mass", "density",
@@ -374,6 +388,16 @@ void validate_scene(const Scene& s, const std::string& file) {
       prev = c.t;
     }
     prev = 0.0;
+    for (std::size_t k = 0; k < b.velocity_changes.size(); ++k) {
+      const VelocityChange& c = b.velocity_changes[k];
+      const std::string kp = p + ".velocity_changes[" + std::to_string(k) + "]";
+      if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
+        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
+      finite3(c.velocity, kp + ".velocity");
+      reach(c.velocity.norm() * T, kp + ".velocity", "|velocity| * horizon");
+      prev = c.t;
+    }
+    prev = 0.0;
     for (std::size_t k = 0; k < rb.angular_velocity_changes.size(); ++k) {
       const AngularVelocityChange& c = rb.angular_velocity_changes[k];
       const std::string kp = p + ".angular_velocity_changes[" + std::to_string(k) + "]";
@@ -422,6 +446,11 @@ json scene_to_json(const Scene& s) {
       for (const AccelerationChange& c : b.acceleration_changes)
         ch.push_back({{"t", c.t}, {"acceleration", v(c.acceleration)}});
       jb["acceleration_changes"] = ch;
+    }
+    if (!b.velocity_changes.empty()) {  // written only when present: other scenes keep their digests
+      json ch = json::array();
+      for (const VelocityChange& c : b.velocity_changes) ch.push_back({{"t", c.t}, {"velocity", v(c.velocity)}});
+      jb["velocity_changes"] = ch;
     }
     if (v2) {
       const Eigen::Quaterniond& q = rb.orientation;

@@ -10,7 +10,8 @@
 // radius <= 0, horizon <= 0, a box with min >= max on some axis, a body outside the box
 // (centre closer than its radius to a wall), a body that could travel further than
 // kMaxSceneMagnitude over the horizon (|v| T or |a + gravity| T^2 / 2), acceleration
-// changes out of order or outside (0, horizon); version 2: an unknown shape kind or name,
+// changes and velocity changes out of order or outside (0, horizon) (and each new velocity
+// within the |v| T limit); version 2: an unknown shape kind or name,
 // a duplicate shape name, a size <= 0, a hull with fewer than 4 points or no volume
 // (coincident, collinear or coplanar points: ccd::hull_degeneracy), a body with both
 // shape and radius, an orientation whose norm is further than 1e-6 from 1 (it is

@@ -174,3 +174,85 @@ TEST_CASE("bodies almost at rest on a wall rest instead of bouncing ever faster"
     CHECK(t.position(0, 0.1).y() > 0.5);
   }
 }
+
+// Velocity changes (docs/formats.md, `velocity_changes`): the velocity jumps, the position
+// is continuous. Dyadic data, so every state below is exact.
+TEST_CASE("velocity changes split the trajectory; the position stays continuous", "[motion][velocity_changes]") {
+  SECTION("free body: two jumps") {
+    ccd::Scene s;
+    s.horizon = 1.0;
+    ccd::Body b{0.5, Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3::Zero(), {}};
+    b.velocity_changes = {{0.25, Vec3(0, 2, 0)}, {0.75, Vec3(-1, 0, 0)}};
+    s.bodies.push_back(b);
+    const ccd::Trajectories t(s);
+    const auto ps = t.pieces(0);
+    REQUIRE(ps.size() == 3);
+    CHECK(ps[0].t1 == 0.25);
+    CHECK(ps[1].t0 == 0.25);
+    CHECK(ps[1].p == Vec3(0.25, 0, 0));
+    CHECK(ps[1].v == Vec3(0, 2, 0));
+    CHECK(ps[2].p == Vec3(0.25, 1, 0));
+    CHECK(t.velocity(0, 0.75) == Vec3(-1, 0, 0));  // the later piece at the break
+    CHECK(t.position(0, 1.0) == Vec3(0, 1, 0));
+  }
+  SECTION("interleaved with acceleration changes, one at the same time") {
+    ccd::Scene s;
+    s.horizon = 1.0;
+    s.gravity = Vec3(0, -2, 0);
+    ccd::Body b{0.5, Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3::Zero(), {}};
+    b.velocity_changes = {{0.25, Vec3(1, 0, 0)}, {0.5, Vec3(0, 0, 1)}};
+    b.acceleration_changes = {{0.5, Vec3(0, 2, 4)}, {0.75, Vec3(0, 2, 0)}};
+    s.bodies.push_back(b);
+    const ccd::Trajectories t(s);
+    const auto ps = t.pieces(0);
+    REQUIRE(ps.size() == 4);  // breaks at 1/4, 1/2 (both changes at once), 3/4
+    CHECK(ps[1].p == Vec3(0, 0.25 - 0.0625, 0));
+    CHECK(ps[1].v == Vec3(1, 0, 0));
+    CHECK(ps[1].a == Vec3(0, -2, 0));
+    CHECK(ps[2].t0 == 0.5);
+    CHECK(ps[2].p == Vec3(0.25, 0.1875 - 0.0625, 0));
+    CHECK(ps[2].v == Vec3(0, 0, 1));
+    CHECK(ps[2].a == Vec3(0, 0, 4));
+    CHECK(ps[3].p == Vec3(0.25, 0.125, 0.25 + 0.125));
+    CHECK(ps[3].v == Vec3(0, 0, 2));  // the acceleration change keeps the velocity reached
+    CHECK(ps[3].a == Vec3::Zero());
+  }
+  SECTION("a jump at the instant the centre reaches a wall plane: the new velocity reflects at once") {
+    ccd::Scene s = box_scene(0.5);
+    s.bodies.push_back({1.0, Vec3(8.5, 5, 5), Vec3(2, 0, 0), Vec3::Zero(), {}});
+    s.bodies[0].velocity_changes = {{0.25, Vec3(4, 0, 0)}};
+    const ccd::Trajectories t(s);
+    CHECK(t.position(0, 0.25) == Vec3(9, 5, 5));
+    CHECK(t.velocity(0, 0.25) == Vec3(-4, 0, 0));
+    CHECK(t.position(0, 0.5) == Vec3(8, 5, 5));
+  }
+  SECTION("a jump towards a wall, then a reflection") {
+    ccd::Scene s = box_scene(1.5);
+    s.bodies.push_back({1.0, Vec3(5, 5, 5), Vec3::Zero(), Vec3::Zero(), {}});
+    s.bodies[0].velocity_changes = {{0.5, Vec3(8, 0, 0)}};
+    const ccd::Trajectories t(s);
+    REQUIRE(t.pieces(0).size() == 3);
+    CHECK(t.pieces(0)[1].t1 == 1.0);
+    CHECK(t.position(0, 1.5) == Vec3(5, 5, 5));
+  }
+  SECTION("a jump on a wrapped axis, then through the face") {
+    ccd::Scene s;
+    s.horizon = 1.5;
+    s.box = ccd::WallBox{Vec3(0, 0, 0), Vec3(8, 8, 8)};
+    s.box->boundary = {ccd::Boundary::Wrap, ccd::Boundary::Reflect, ccd::Boundary::Reflect};
+    s.bodies.push_back({1.0, Vec3(6, 4, 4), Vec3::Zero(), Vec3::Zero(), {}});
+    s.bodies[0].velocity_changes = {{0.5, Vec3(4, 0, 0)}};
+    const ccd::Trajectories t(s);
+    CHECK(t.position(0, 1.5) == Vec3(2, 4, 4));
+  }
+  SECTION("a body resting on the floor is launched by a jump") {
+    ccd::Scene s = box_scene(2.0);
+    s.gravity = Vec3(0, -2, 0);
+    s.bodies.push_back({0.5, Vec3(5, 0.5, 5), Vec3::Zero(), Vec3::Zero(), {}});
+    s.bodies[0].velocity_changes = {{0.5, Vec3(0, 1, 0)}};
+    const ccd::Trajectories t(s);
+    CHECK(t.position(0, 0.5) == Vec3(5, 0.5, 5));
+    CHECK(t.position(0, 1.0) == Vec3(5, 0.75, 5));  // 0.5 + s - s^2, s = 1/2
+    CHECK(t.position(0, 1.5) == Vec3(5, 0.5, 5));   // back on the floor at s = 1
+  }
+}

@@ -1,6 +1,6 @@
 // The truth against an independent reference in IEEE quadruple precision (__float128,
 // 113 bits): every body's position is recomputed from the scene's own numbers (initial
-// state, acceleration changes; no walls, so that the reference needs no root solving),
+// state, acceleration and velocity changes; no walls, so that the reference needs no root solving),
 // and the contact function is evaluated there. For every transversal event, the pair must
 // be in contact at `enter` and not one double before, in contact at `exit` and not one
 // double after (up to a tolerance far below what one ulp of time changes), and random
@@ -8,6 +8,7 @@
 #include <ccd/truth/ground_truth.hpp>
 
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -27,16 +28,28 @@ QVec position_q(const ccd::Scene& s, const ccd::Body& b, double t) {
     v[k] = b.velocity[k];
     a[k] = Q(b.acceleration[k]) + Q(s.gravity[k]);
   }
+  // Acceleration and velocity changes merged in time order (at equal times, both).
   Q t0 = 0;
-  for (const ccd::AccelerationChange& c : b.acceleration_changes) {
-    if (!(c.t < t)) break;
-    const Q dt = Q(c.t) - t0;
+  std::size_t ia = 0, iv = 0;
+  while (true) {
+    const double ta = ia < b.acceleration_changes.size() ? b.acceleration_changes[ia].t : INFINITY;
+    const double tv = iv < b.velocity_changes.size() ? b.velocity_changes[iv].t : INFINITY;
+    const double tc = std::min(ta, tv);
+    if (!(tc < t)) break;
+    const Q dt = Q(tc) - t0;
     for (int k = 0; k < 3; ++k) {
       p[k] += v[k] * dt + a[k] * dt * dt / 2;
       v[k] += a[k] * dt;
-      a[k] = Q(c.acceleration[k]) + Q(s.gravity[k]);
     }
-    t0 = c.t;
+    if (ta == tc) {
+      for (int k = 0; k < 3; ++k) a[k] = Q(b.acceleration_changes[ia].acceleration[k]) + Q(s.gravity[k]);
+      ++ia;
+    }
+    if (tv == tc) {
+      for (int k = 0; k < 3; ++k) v[k] = b.velocity_changes[iv].velocity[k];
+      ++iv;
+    }
+    t0 = tc;
   }
   const Q dt = Q(t) - t0;
   QVec r;
@@ -52,8 +65,10 @@ Q f_q(const ccd::Scene& s, std::uint32_t i, std::uint32_t j, double t) {
   return d2 - R * R;
 }
 
-ccd::Scene random_scene(std::uint64_t seed, double offset) {
-  std::mt19937_64 rng(seed);
+// jumps: every third body also gets two velocity changes (drawn from their own generator,
+// so the rest of the scene is the same).
+ccd::Scene random_scene(std::uint64_t seed, double offset, bool jumps) {
+  std::mt19937_64 rng(seed), jump_rng(seed + 1000);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   ccd::Scene s;
   s.horizon = 2.0;
@@ -65,6 +80,12 @@ ccd::Scene random_scene(std::uint64_t seed, double offset) {
     b.velocity = ccd::Vec3(4 * u(rng), 4 * u(rng), 4 * u(rng));
     if (i % 3 != 0) b.acceleration = ccd::Vec3(3 * u(rng), 3 * u(rng), 3 * u(rng));  // quartic pairs
     if (i % 4 == 0) b.acceleration_changes.push_back({0.5 + 0.5 * (u(rng) + 1.0), ccd::Vec3(2 * u(rng), 0, 0)});
+    if (jumps && i % 3 == 1) {
+      const double t1 = 0.9 * (u(jump_rng) + 1.0) / 2.0 + 0.05;
+      b.velocity_changes.push_back({t1, ccd::Vec3(4 * u(jump_rng), 4 * u(jump_rng), 4 * u(jump_rng))});
+      b.velocity_changes.push_back({t1 + 0.75, ccd::Vec3(4 * u(jump_rng), 4 * u(jump_rng), 4 * u(jump_rng))});
+    }
+    if (jumps && i == 4) b.velocity_changes = {{b.acceleration_changes[0].t, ccd::Vec3(1, 2, 3)}};  // both at once
     s.bodies.push_back(b);
   }
   return s;
@@ -74,8 +95,9 @@ ccd::Scene random_scene(std::uint64_t seed, double offset) {
 
 TEST_CASE("the truth agrees with a quadruple-precision reference at every event end", "[truth][reference]") {
   const double offset = GENERATE(0.0, 1000.0, 100000.0);
-  CAPTURE(offset);
-  const ccd::Scene s = random_scene(17 + static_cast<std::uint64_t>(offset), offset);
+  const bool jumps = GENERATE(false, true);  // velocity changes (docs/formats.md)
+  CAPTURE(offset, jumps);
+  const ccd::Scene s = random_scene(17 + static_cast<std::uint64_t>(offset), offset, jumps);
   const ccd::Trajectories traj(s);
   const auto events = ccd::compute_truth(traj);
   REQUIRE(events.size() > 50);
