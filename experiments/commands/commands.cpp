@@ -18,11 +18,12 @@ extern const Command kCcdCommand;
 extern const Command kClothCommand;
 extern const Command kViewCommand;
 extern const Command kPosesCommand;
+extern const Command kImportCommand;
 
 std::span<const Command> commands() {
   static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
                                   kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand,
-                                  kViewCommand,  kPosesCommand};
+                                  kViewCommand,  kPosesCommand,   kImportCommand};
   return table;
 }
 

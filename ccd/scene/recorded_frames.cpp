@@ -1,0 +1,378 @@
+#include <ccd/scene/recorded_frames.hpp>
+
+#include <ccd/geometry/double_double.hpp>
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_io.hpp>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <string_view>
+
+namespace ccd {
+namespace {
+
+// Largest accepted | |q| - 1 | of a recorded orientation (the scene format's own).
+constexpr double kQuaternionTolerance = 1e-6;
+
+enum Column : int { kBody, kT, kX, kY, kZ, kRadius, kShape, kQw, kQx, kQy, kQz, kColumns };
+constexpr std::array<std::string_view, kColumns> kNames = {"body", "t",     "x",  "y",  "z",  "radius",
+                                                           "shape", "qw", "qx", "qy", "qz"};
+
+struct Frame {
+  double t = 0.0;
+  Vec3 p{Vec3::Zero()};
+  Eigen::Quaterniond q{Eigen::Quaterniond::Identity()};
+  std::size_t line = 0;
+};
+
+struct Track {
+  std::vector<Frame> frames;
+  std::optional<double> radius;
+  std::string shape;  // empty: a plain sphere
+  std::size_t size_line = 0;  // the line that fixed radius or shape
+};
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  return s;
+}
+
+// Cells of one CSV line, trimmed; a cell in double quotes may hold commas ("" is a
+// quote), as Python's csv module writes `"box:1,0.5,0.25"`. nullopt: an unclosed quote.
+std::optional<std::vector<std::string>> split(std::string_view line) {
+  std::vector<std::string> cells;
+  std::size_t i = 0;
+  while (true) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    std::string cell;
+    if (i < line.size() && line[i] == '"') {
+      ++i;
+      while (true) {
+        if (i >= line.size()) return std::nullopt;
+        if (line[i] == '"') {
+          if (i + 1 < line.size() && line[i + 1] == '"') {
+            cell += '"';
+            i += 2;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        cell += line[i++];
+      }
+      const std::size_t comma = line.find(',', i);
+      if (!trim(line.substr(i, comma == std::string_view::npos ? std::string_view::npos : comma - i)).empty())
+        return std::nullopt;  // text after the closing quote
+      cells.push_back(std::move(cell));
+      if (comma == std::string_view::npos) break;
+      i = comma + 1;
+    } else {
+      const std::size_t comma = line.find(',', i);
+      cells.emplace_back(trim(line.substr(i, comma == std::string_view::npos ? std::string_view::npos : comma - i)));
+      if (comma == std::string_view::npos) break;
+      i = comma + 1;
+    }
+  }
+  return cells;
+}
+
+std::optional<double> to_number(std::string_view cell) {
+  if (cell.empty()) return std::nullopt;
+  const std::string s(cell);
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || !std::isfinite(x)) return std::nullopt;
+  return x;
+}
+
+bool is_index(const std::string& label) {
+  return !label.empty() && label.size() <= 18 && std::all_of(label.begin(), label.end(), [](char c) {
+           return c >= '0' && c <= '9';
+         });
+}
+
+std::string quoted(std::string_view s) { return "\"" + std::string(s) + "\""; }
+
+// `sphere:R`, `capsule:HALF_LENGTH,R`, `box:HX,HY,HZ` as a shape object of the scene
+// format (named by the spec itself); nullopt when `spec` has no known kind prefix.
+std::optional<nlohmann::json> inline_shape(const std::string& spec, const std::string& file, const std::string& field) {
+  const std::size_t colon = spec.find(':');
+  if (colon == std::string::npos) return std::nullopt;
+  const std::string kind = spec.substr(0, colon);
+  std::size_t want = 0;
+  if (kind == "sphere") want = 1;
+  else if (kind == "capsule") want = 2;
+  else if (kind == "box") want = 3;
+  else return std::nullopt;
+  std::vector<double> v;
+  std::string_view rest = std::string_view(spec).substr(colon + 1);
+  while (true) {
+    const std::size_t comma = rest.find(',');
+    const auto x = to_number(trim(rest.substr(0, comma)));
+    if (!x || !(*x > 0.0))
+      throw InputError(file, field, "shape " + quoted(spec) + ": sizes must be numbers > 0 (" + kind + ":" +
+                                        (want == 1 ? "R" : want == 2 ? "HALF_LENGTH,R" : "HX,HY,HZ") + ")");
+    v.push_back(*x);
+    if (comma == std::string_view::npos) break;
+    rest = rest.substr(comma + 1);
+  }
+  if (v.size() != want)
+    throw InputError(file, field, "shape " + quoted(spec) + " needs " + std::to_string(want) + " size(s), got " +
+                                      std::to_string(v.size()));
+  nlohmann::json j = {{"name", spec}, {"kind", kind}};
+  if (want == 1) j["radius"] = v[0];
+  if (want == 2) {
+    j["half_length"] = v[0];
+    j["radius"] = v[1];
+  }
+  if (want == 3) j["half_extents"] = {v[0], v[1], v[2]};
+  return j;
+}
+
+// The orientation after turning q0 at the constant world-frame angular velocity omega for
+// s seconds: the formula of RotationPiece::orientation (ccd/motion/rotation.cpp), so the
+// importer tracks the orientation the scene's motion model will produce.
+Eigen::Quaterniond turned(const Eigen::Quaterniond& q0, const Vec3& omega, double s) {
+  const double w = omega.norm();
+  if (w == 0.0) return q0;
+  const double half = 0.5 * w * s;
+  const Vec3 axis = omega / w;
+  const Eigen::Quaterniond step(std::cos(half), std::sin(half) * axis.x(), std::sin(half) * axis.y(),
+                                std::sin(half) * axis.z());
+  return (step * q0).normalized();
+}
+
+// The world-frame angular velocity that turns `from` into `to` in s seconds along the
+// shortest arc (the rotation to * from^-1 with a non-negative scalar part).
+Vec3 angular_velocity(const Eigen::Quaterniond& from, const Eigen::Quaterniond& to, double s) {
+  Eigen::Quaterniond d = to * from.conjugate();
+  if (d.w() < 0.0) d.coeffs() = -d.coeffs();
+  const Vec3 axis = d.vec();
+  const double n = axis.norm();
+  if (n == 0.0) return Vec3::Zero();
+  const double angle = 2.0 * std::atan2(n, d.w());
+  return axis * (angle / (n * s));
+}
+
+[[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& column, const std::string& what) {
+  throw InputError(file, "line " + std::to_string(line) + (column.empty() ? "" : ": " + column), what);
+}
+
+}  // namespace
+
+FrameImport import_frames(std::istream& csv, const std::string& file, const FrameImportOptions& options) {
+  auto fail = [&](std::size_t line, const std::string& column, const std::string& what) {
+    fail_at(file, line, column, what);
+  };
+  std::string text;
+  std::size_t line_no = 0;
+  // Header.
+  std::array<int, kColumns> where;
+  where.fill(-1);
+  std::size_t header_cells = 0;
+  while (std::getline(csv, text)) {
+    ++line_no;
+    if (trim(text).empty()) continue;
+    const auto split_cells = split(text);
+    if (!split_cells) fail(line_no, "header", "unclosed quote");
+    const auto& cells = *split_cells;
+    header_cells = cells.size();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      const auto it = std::find(kNames.begin(), kNames.end(), cells[c]);
+      if (it == kNames.end())
+        fail(line_no, "header", "unknown column " + quoted(cells[c]) +
+                                    " (known: body, t, x, y, z, radius, shape, qw, qx, qy, qz)");
+      const auto k = static_cast<std::size_t>(it - kNames.begin());
+      if (where[k] >= 0) fail(line_no, "header", "column " + quoted(cells[c]) + " appears twice");
+      where[k] = static_cast<int>(c);
+    }
+    break;
+  }
+  if (header_cells == 0) throw InputError(file, "", "empty: needs a header row (body,t,x,y,z,radius)");
+  const std::size_t header_line = line_no;
+  for (int k : {kBody, kT, kX, kY, kZ})
+    if (where[static_cast<std::size_t>(k)] < 0)
+      fail(header_line, "header", "missing column " + quoted(kNames[static_cast<std::size_t>(k)]));
+  const int quats = (where[kQw] >= 0) + (where[kQx] >= 0) + (where[kQy] >= 0) + (where[kQz] >= 0);
+  if (quats != 0 && quats != 4) fail(header_line, "header", "give all four of qw, qx, qy, qz or none");
+
+  // Rows, grouped by body.
+  std::map<std::string, Track> tracks;
+  std::vector<std::string> order;
+  std::size_t rows = 0;
+  double t_min = INFINITY, t_max = -INFINITY;
+  while (std::getline(csv, text)) {
+    ++line_no;
+    if (trim(text).empty()) continue;
+    const auto split_cells = split(text);
+    if (!split_cells) fail(line_no, "", "unclosed quote");
+    const auto& cells = *split_cells;
+    if (cells.size() != header_cells)
+      fail(line_no, "", "has " + std::to_string(cells.size()) + " cells, the header " + std::to_string(header_cells));
+    auto cell = [&](Column k) {
+      return where[k] < 0 ? std::string_view() : std::string_view(cells[static_cast<std::size_t>(where[k])]);
+    };
+    auto number = [&](Column k) {
+      const std::string_view c = cell(k);
+      const auto x = to_number(c);
+      if (!x) fail(line_no, std::string(kNames[k]), c.empty() ? "missing number" : "must be a finite number, got " + quoted(c));
+      return *x;
+    };
+    const std::string label(cell(kBody));
+    if (label.empty()) fail(line_no, "body", "missing body label");
+    Frame f;
+    f.line = line_no;
+    f.t = number(kT);
+    f.p = Vec3(number(kX), number(kY), number(kZ));
+    if (quats == 4) {
+      const Eigen::Quaterniond q(number(kQw), number(kQx), number(kQy), number(kQz));
+      const double n = q.norm();
+      if (!(std::fabs(n - 1.0) <= kQuaternionTolerance))
+        fail(line_no, "qw,qx,qy,qz", "must be a unit quaternion within 1e-6 (|q| = " + std::to_string(n) + ")");
+      f.q = q.normalized();
+    }
+    const std::string shape(cell(kShape));
+    const std::string_view radius_cell = cell(kRadius);
+    std::optional<double> radius;
+    if (!radius_cell.empty()) {
+      radius = number(kRadius);
+      if (!(*radius > 0.0)) fail(line_no, "radius", "must be > 0");
+      if (!shape.empty()) fail(line_no, "radius", "not allowed with a shape (the shape gives the size)");
+    }
+    auto [it, fresh] = tracks.try_emplace(label);
+    Track& tr = it->second;
+    if (fresh) {
+      order.push_back(label);
+      tr.radius = radius;
+      tr.shape = shape;
+      tr.size_line = line_no;
+      if (!radius && shape.empty()) {
+        if (!options.radius)
+          fail(line_no, where[kRadius] >= 0 ? "radius" : "header",
+               where[kRadius] >= 0 ? "missing number (or give a shape)"
+                                   : "no radius or shape column: give --radius R for every body");
+        tr.radius = options.radius;
+      }
+    } else {
+      if (shape != tr.shape)
+        fail(line_no, "shape", "body " + quoted(label) + " has shape " + quoted(tr.shape) + " on line " +
+                                   std::to_string(tr.size_line) + "; a body's shape cannot change");
+      if (radius && tr.radius && *radius != *tr.radius)
+        fail(line_no, "radius", "body " + quoted(label) + " has radius " + std::to_string(*tr.radius) + " on line " +
+                                    std::to_string(tr.size_line) + "; a body's radius cannot change");
+      if (!radius && shape.empty() && !options.radius && where[kRadius] >= 0)
+        fail(line_no, "radius", "missing number (or give a shape)");
+    }
+    tr.frames.push_back(f);
+    t_min = std::min(t_min, f.t);
+    t_max = std::max(t_max, f.t);
+    ++rows;
+  }
+  if (rows == 0) fail(header_line, "", "no frames after the header");
+  if (!(t_max > t_min)) throw InputError(file, "t", "needs at least two distinct times (the horizon would be 0)");
+
+  // Body order: numeric labels by value, others as strings.
+  const bool numeric = std::all_of(order.begin(), order.end(), is_index);
+  std::sort(order.begin(), order.end(), [&](const std::string& a, const std::string& b) {
+    if (numeric && a.size() != b.size()) return a.size() < b.size();  // no leading-zero ambiguity below
+    return a < b;
+  });
+  if (numeric)  // "07" and "7" would be two bodies with one index: refuse leading zeros
+    for (const std::string& l : order)
+      if (l.size() > 1 && l[0] == '0') fail(tracks[l].frames.front().line, "body", "label " + quoted(l) + " has a leading zero");
+
+  // Shapes: the named ones, then inline specs as they are first used.
+  nlohmann::json shapes = options.shapes.is_array() ? options.shapes : nlohmann::json::array();
+  auto known = [&](const std::string& name) {
+    return std::any_of(shapes.begin(), shapes.end(), [&](const nlohmann::json& s) {
+      return s.is_object() && s.contains("name") && s["name"] == name;
+    });
+  };
+  for (const std::string& l : order) {
+    const Track& tr = tracks[l];
+    if (tr.shape.empty() || known(tr.shape)) continue;
+    const auto j = inline_shape(tr.shape, file, "line " + std::to_string(tr.size_line) + ": shape");
+    if (!j)
+      fail(tr.size_line, "shape", "unknown shape " + quoted(tr.shape) +
+                                      " (not in --shapes; inline shapes are sphere:R, capsule:HALF_LENGTH,R, box:HX,HY,HZ)");
+    shapes.push_back(*j);
+  }
+  FrameImport out;
+  out.time_origin = t_min;
+  out.frames = rows;
+  Scene& s = out.scene;
+  s.horizon = t_max - t_min;
+  if (!shapes.empty()) {  // parsed and checked as a scene's shapes
+    const nlohmann::json holder = {{"format", kSceneFormat}, {"horizon", 1.0}, {"shapes", shapes},
+                                   {"bodies", nlohmann::json::array()}};
+    s.shapes = scene_from_json(holder, file).shapes;
+  }
+  const bool any_shape = std::any_of(order.begin(), order.end(), [&](const std::string& l) { return !tracks[l].shape.empty(); });
+
+  for (const std::string& label : order) {
+    Track& tr = tracks[label];
+    std::sort(tr.frames.begin(), tr.frames.end(), [](const Frame& a, const Frame& b) {
+      return a.t < b.t || (a.t == b.t && a.line < b.line);
+    });
+    for (std::size_t k = 1; k < tr.frames.size(); ++k)
+      if (tr.frames[k].t == tr.frames[k - 1].t)
+        fail(std::max(tr.frames[k].line, tr.frames[k - 1].line), "t",
+             "body " + quoted(label) + " has two frames at t = " + std::to_string(tr.frames[k].t) + " (lines " +
+                 std::to_string(std::min(tr.frames[k].line, tr.frames[k - 1].line)) + " and " +
+                 std::to_string(std::max(tr.frames[k].line, tr.frames[k - 1].line)) + ")");
+    if (tr.frames.front().t != t_min)
+      fail(tr.frames.front().line, "t", "body " + quoted(label) + " starts at t = " + std::to_string(tr.frames.front().t) +
+                                            ", after the file's first time " + std::to_string(t_min) +
+                                            " (every body needs a frame at the first and the last time)");
+    if (tr.frames.back().t != t_max)
+      fail(tr.frames.back().line, "t", "body " + quoted(label) + " ends at t = " + std::to_string(tr.frames.back().t) +
+                                           ", before the file's last time " + std::to_string(t_max) +
+                                           " (every body needs a frame at the first and the last time)");
+    // Scene times; the velocity of each interval from the model's own position at its start.
+    std::vector<double> tau(tr.frames.size());
+    for (std::size_t k = 0; k < tau.size(); ++k) tau[k] = tr.frames[k].t - t_min;
+    Body b;
+    b.radius = tr.radius.value_or(0.0);
+    b.position = tr.frames.front().p;
+    DdVec3 at(b.position);  // the model's position at tau[k]
+    Vec3 previous{Vec3::Zero()};
+    RigidBody rb;
+    const bool shaped = !tr.shape.empty();
+    if (shaped) {
+      const auto found = std::find_if(s.shapes.begin(), s.shapes.end(), [&](const Shape& x) { return x.name == tr.shape; });
+      rb.shape = static_cast<std::int32_t>(found - s.shapes.begin());
+      rb.orientation = tr.frames.front().q;
+    }
+    Eigen::Quaterniond q_at = rb.orientation;  // the model's orientation at tau[k]
+    Vec3 previous_omega{Vec3::Zero()};
+    for (std::size_t k = 0; k + 1 < tau.size(); ++k) {
+      const Dd s_k = two_sum(tau[k + 1], -tau[k]);
+      const double dt = s_k.value();
+      Vec3 v;
+      for (int a = 0; a < 3; ++a) v[a] = (Dd(tr.frames[k + 1].p[a]) - at[a]).value() / dt;
+      if (k == 0) b.velocity = v;
+      else if (v != previous) b.velocity_changes.push_back({tau[k], v});
+      for (int a = 0; a < 3; ++a) at[a] = at[a] + Dd(v[a]) * s_k;
+      previous = v;
+      if (shaped && quats == 4) {
+        const Vec3 w = angular_velocity(q_at, tr.frames[k + 1].q, dt);
+        if (k == 0) rb.angular_velocity = w;
+        else if (w != previous_omega) rb.angular_velocity_changes.push_back({tau[k], w});
+        q_at = turned(q_at, w, tau[k + 1] - tau[k]);
+        previous_omega = w;
+      }
+    }
+    if (any_shape) s.add_rigid_body(std::move(b), std::move(rb));
+    else s.bodies.push_back(std::move(b));
+  }
+  out.labels = order;
+  validate_scene(s, file);
+  return out;
+}
+
+}  // namespace ccd

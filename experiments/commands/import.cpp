@@ -1,0 +1,120 @@
+// `ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json]`: recorded
+// frames from any simulator turned into a scene whose motion is linear between frames
+// (ccd/scene/recorded_frames.hpp, docs/import.md).
+#include "command.hpp"
+
+#include <ccd/io/atomic_file.hpp>
+#include <ccd/io/json_reader.hpp>
+#include <ccd/scene/input_error.hpp>
+#include <ccd/scene/recorded_frames.hpp>
+#include <ccd/scene/scene_io.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <iostream>
+#include <new>
+#include <optional>
+#include <string>
+
+namespace ccdlab {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json]\n"
+    "\n"
+    "Turns recorded frames (from any simulator) into a scene: between two frames of a body\n"
+    "its centre moves linearly, i.e. its velocity changes at every frame, and a shaped body\n"
+    "turns at the constant angular velocity that takes one frame's orientation to the next\n"
+    "along the shortest arc (docs/import.md). CSV with a header row, columns in any order:\n"
+    "  body,t,x,y,z     required: body label, time (s), centre (m)\n"
+    "  radius           the body's radius (m), > 0, the same in all its rows\n"
+    "  shape            a name from --shapes, or sphere:R, capsule:HALF_LENGTH,R, box:HX,HY,HZ\n"
+    "  qw,qx,qy,qz      optional orientation (unit quaternion, body to world)\n"
+    "A row gives a radius or a shape; rows in any order. Scene time 0 is the file's first\n"
+    "time, the horizon its last; every body needs a frame at both. Bodies are ordered by\n"
+    "label (numerically when all labels are integers). No walls, no gravity: the\n"
+    "recording holds them. `ccdlab poses` output imports as it is, with --radius.\n"
+    "\n"
+    "  -o SCENE.json        the scene (written atomically; '-' = stdout)\n"
+    "  --radius R           radius of bodies whose rows give no radius and no shape\n"
+    "  --shapes FILE.json   named shapes: a JSON array of shape objects as in a scene's\n"
+    "                       \"shapes\" (docs/formats.md), or a scene file whose shapes are used\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written);\n"
+    "a bad row is named by its line and column (frames.csv: line 7: radius: must be > 0).\n";
+
+int usage_error(const std::string& what) {
+  std::cerr << "ccdlab import: " << what << " (see ccdlab import --help)\n";
+  return kExitBadInput;
+}
+
+int run_import(std::span<const std::string> args) {
+  std::string csv_path, out_path, shapes_path, radius_text;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "-o" || a == "--output" || a == "--radius" || a == "--shapes") {
+      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
+      (a == "--radius" ? radius_text : a == "--shapes" ? shapes_path : out_path) = args[++i];
+    } else if (!a.empty() && a[0] == '-') {
+      return usage_error("unknown option '" + a + "'");
+    } else if (csv_path.empty()) {
+      csv_path = a;
+    } else {
+      return usage_error("unexpected argument '" + a + "'");
+    }
+  }
+  if (csv_path.empty()) return usage_error("missing FRAMES.csv");
+  if (out_path.empty()) return usage_error("missing -o SCENE.json");
+  ccd::FrameImportOptions options;
+  if (!radius_text.empty()) {
+    char* end = nullptr;
+    const double r = std::strtod(radius_text.c_str(), &end);
+    if (end != radius_text.c_str() + radius_text.size() || !std::isfinite(r) || !(r > 0.0))
+      return usage_error("--radius must be a number > 0, got '" + radius_text + "'");
+    options.radius = r;
+  }
+  try {
+    std::vector<std::string> inputs = {csv_path};
+    if (!shapes_path.empty()) inputs.push_back(shapes_path);
+    ccd::OutputFile output(out_path, inputs);
+    if (!shapes_path.empty()) {
+      const nlohmann::json j = ccd::read_json_file(shapes_path);
+      if (j.is_array()) {
+        options.shapes = j;
+      } else if (j.is_object() && j.contains("shapes")) {
+        options.shapes = j["shapes"];
+      } else {
+        throw ccd::InputError(shapes_path, "", "must be an array of shapes or a scene with \"shapes\"");
+      }
+    }
+    std::ifstream in(csv_path, std::ios::binary);
+    if (!in) throw ccd::InputError(csv_path, "", "cannot be opened");
+    const ccd::FrameImport imported = ccd::import_frames(in, csv_path, options);
+    std::size_t changes = 0;
+    for (const ccd::Body& b : imported.scene.bodies) changes += b.velocity_changes.size();
+    output.commit(ccd::scene_to_json(imported.scene).dump(1) + "\n");
+    (output.is_stdout() ? std::cerr : std::cout)
+        << "ccdlab import: " << imported.scene.bodies.size() << " bodies, " << imported.frames << " frames, "
+        << changes << " velocity changes, horizon " << imported.scene.horizon << " s (scene time 0 = t "
+        << imported.time_origin << " of the file) -> " << out_path << "\n";
+  } catch (const ccd::InputError& e) {
+    std::cerr << "ccdlab import: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab import: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ccdlab import: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+extern const Command kImportCommand = {"import", "recorded frames (CSV from any simulator) to a scene, linear between frames",
+                                       kUsage, run_import};
+
+}  // namespace ccdlab
