@@ -310,7 +310,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
   if (!shapes.empty()) {  // parsed and checked as a scene's shapes
     const nlohmann::json holder = {{"format", kSceneFormat}, {"horizon", 1.0}, {"shapes", shapes},
                                    {"bodies", nlohmann::json::array()}};
-    s.shapes = scene_from_json(holder, file).shapes;
+    s.shapes = scene_from_json(holder, options.shapes_file).shapes;
   }
   const bool any_shape = std::any_of(order.begin(), order.end(), [&](const std::string& l) { return !tracks[l].shape.empty(); });
 

@@ -53,6 +53,8 @@ struct FrameImportOptions {
   std::optional<double> radius;
   /// Named shapes, as the `shapes` array of a `ccdlab-scene/2` file (docs/formats.md).
   nlohmann::json shapes = nlohmann::json::array();
+  /// Names `shapes` in error messages (`shapes.json: shapes[1].half_extents[2]: must be > 0`).
+  std::string shapes_file = "--shapes";
 };
 
 struct FrameImport {

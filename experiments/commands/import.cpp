@@ -17,6 +17,7 @@
 #include <new>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ccdlab {
 namespace {
@@ -80,6 +81,7 @@ int run_import(std::span<const std::string> args) {
     if (!shapes_path.empty()) inputs.push_back(shapes_path);
     ccd::OutputFile output(out_path, inputs);
     if (!shapes_path.empty()) {
+      options.shapes_file = shapes_path;
       const nlohmann::json j = ccd::read_json_file(shapes_path);
       if (j.is_array()) {
         options.shapes = j;

@@ -168,6 +168,12 @@ TEST_CASE("recorded frames: inline shapes", "[scene][import]") {
   CHECK(error_of("body,t,x,y,z,shape\n0,0,0,0,0,sphere:-1\n0,1,1,0,0,sphere:-1\n") ==
         "frames.csv: line 2: shape: shape \"sphere:-1\": sizes must be numbers > 0 (sphere:R)");
   CHECK(error_of("body,t,x,y,z,shape\n0,0,0,0,0,\"box:1,1\n") == "frames.csv: line 2: unclosed quote");
+  // A bad named shape is reported against the shapes' own file.
+  ccd::FrameImportOptions o;
+  o.shapes = nlohmann::json::parse(R"([{"name": "crate", "kind": "box", "half_extents": [1, 0, 1]}])");
+  o.shapes_file = "shapes.json";
+  CHECK(error_of("body,t,x,y,z,shape\n0,0,0,0,0,crate\n0,1,1,0,0,crate\n", o) ==
+        "shapes.json: shapes[0].half_extents[1]: must be > 0");
 }
 
 TEST_CASE("recorded frames: every bad row is named by line and column", "[scene][import]") {

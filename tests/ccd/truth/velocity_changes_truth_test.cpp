@@ -5,12 +5,15 @@
 // jumping, a jump at a wall reflection. Every number is a dyadic rational: times at a
 // break (a jump, a tangency) are checked exactly, transversal crossings inside a piece
 // to 1e-15 s (docs/truth.md: accurate to about 1e-15 of the horizon).
+#include <ccd/motion/rotation.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/pair_contact.hpp>
+#include <ccd/truth/rigid_truth.hpp>
 
 #include <tests/ccd/scene/body_builder.hpp>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <vector>
 
 using ccd::Vec3;
@@ -147,4 +150,36 @@ TEST_CASE("velocity changes: pair_first_contact starts at the jump that begins a
   CHECK(ccd::pair_first_contact(traj, 0, 1, 0.0, 2.0) == 0.25);
   CHECK(ccd::pair_first_contact(traj, 0, 1, 0.5, 2.0) == 0.5);  // already in contact at the window's start
   CHECK_FALSE(ccd::pair_first_contact(traj, 0, 1, 1.5, 2.0).has_value());
+}
+
+TEST_CASE("velocity changes: rigid bodies, centres jump and orientations do not", "[truth][velocity_changes][rigid]") {
+  // Two unit crates (half extents 1/2); crate 0 turns about x (a quarter turn keeps its
+  // x extent), moves at 4 m/s and slows to 2 m/s at t = 1/4, when its face reaches crate
+  // 1's: contact from 1/4 until x_0 = 3 at t = 5/4 (certified brackets hold both).
+  ccd::Scene s;
+  s.horizon = 2.0;
+  s.shapes.push_back(ccd::make_box_shape(Vec3(0.5, 0.5, 0.5), "crate"));
+  ccd::RigidBody spin;
+  spin.shape = 0;
+  spin.angular_velocity = Vec3(M_PI, 0, 0);
+  ccd::Body moving = body(0, Vec3(0, 0, 0), Vec3(4, 0, 0));
+  moving.velocity_changes = {{0.25, Vec3(2, 0, 0)}};
+  s.add_rigid_body(moving, spin);
+  ccd::RigidBody still;
+  still.shape = 0;
+  s.add_rigid_body(body(0, Vec3(2, 0, 0)), still);
+  const ccd::Trajectories traj(s);
+  const ccd::RigidMotion motion(s, traj);
+  const ccd::RigidTruthResult truth = ccd::compute_rigid_truth(motion);
+  REQUIRE(truth.events.size() == 1);
+  CHECK_FALSE(truth.errors[0].grazing);
+  CHECK(std::fabs(truth.events[0].enter - 0.25) <= truth.errors[0].enter_error + 1e-12);
+  CHECK(std::fabs(truth.events[0].exit - 1.25) <= truth.errors[0].exit_error + 1e-12);
+  CHECK(truth.errors[0].enter_error <= 1e-8);
+  // The orientation is the one without the velocity change, bit for bit.
+  ccd::Scene plain = s;
+  plain.bodies[0].velocity_changes.clear();
+  const ccd::Rotations with(s), without(plain);
+  for (const double t : {0.0, 0.25, 0.5, 1.0, 1.75})
+    CHECK(with.orientation(0, t).coeffs() == without.orientation(0, t).coeffs());
 }

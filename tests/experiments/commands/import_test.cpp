@@ -6,6 +6,7 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
