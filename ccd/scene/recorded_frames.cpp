@@ -96,7 +96,12 @@ bool is_index(const std::string& label) {
          });
 }
 
-std::string quoted(std::string_view s) { return "\"" + std::string(s) + "\""; }
+std::string in_quotes(std::string_view s) {
+  std::string r(1, '"');
+  r.append(s);
+  r.push_back('"');
+  return r;
+}
 
 // `sphere:R`, `capsule:HALF_LENGTH,R`, `box:HX,HY,HZ` as a shape object of the scene
 // format (named by the spec itself); nullopt when `spec` has no known kind prefix.
@@ -115,14 +120,14 @@ std::optional<nlohmann::json> inline_shape(const std::string& spec, const std::s
     const std::size_t comma = rest.find(',');
     const auto x = to_number(trim(rest.substr(0, comma)));
     if (!x || !(*x > 0.0))
-      throw InputError(file, field, "shape " + quoted(spec) + ": sizes must be numbers > 0 (" + kind + ":" +
+      throw InputError(file, field, "shape " + in_quotes(spec) + ": sizes must be numbers > 0 (" + kind + ":" +
                                         (want == 1 ? "R" : want == 2 ? "HALF_LENGTH,R" : "HX,HY,HZ") + ")");
     v.push_back(*x);
     if (comma == std::string_view::npos) break;
     rest = rest.substr(comma + 1);
   }
   if (v.size() != want)
-    throw InputError(file, field, "shape " + quoted(spec) + " needs " + std::to_string(want) + " size(s), got " +
+    throw InputError(file, field, "shape " + in_quotes(spec) + " needs " + std::to_string(want) + " size(s), got " +
                                       std::to_string(v.size()));
   nlohmann::json j = {{"name", spec}, {"kind", kind}};
   if (want == 1) j["radius"] = v[0];
@@ -185,10 +190,10 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
     for (std::size_t c = 0; c < cells.size(); ++c) {
       const auto it = std::find(kNames.begin(), kNames.end(), cells[c]);
       if (it == kNames.end())
-        fail(line_no, "header", "unknown column " + quoted(cells[c]) +
+        fail(line_no, "header", "unknown column " + in_quotes(cells[c]) +
                                     " (known: body, t, x, y, z, radius, shape, qw, qx, qy, qz)");
       const auto k = static_cast<std::size_t>(it - kNames.begin());
-      if (where[k] >= 0) fail(line_no, "header", "column " + quoted(cells[c]) + " appears twice");
+      if (where[k] >= 0) fail(line_no, "header", "column " + in_quotes(cells[c]) + " appears twice");
       where[k] = static_cast<int>(c);
     }
     break;
@@ -197,7 +202,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
   const std::size_t header_line = line_no;
   for (int k : {kBody, kT, kX, kY, kZ})
     if (where[static_cast<std::size_t>(k)] < 0)
-      fail(header_line, "header", "missing column " + quoted(kNames[static_cast<std::size_t>(k)]));
+      fail(header_line, "header", "missing column " + in_quotes(kNames[static_cast<std::size_t>(k)]));
   const int quats = (where[kQw] >= 0) + (where[kQx] >= 0) + (where[kQy] >= 0) + (where[kQz] >= 0);
   if (quats != 0 && quats != 4) fail(header_line, "header", "give all four of qw, qx, qy, qz or none");
 
@@ -220,7 +225,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
     auto number = [&](Column k) {
       const std::string_view c = cell(k);
       const auto x = to_number(c);
-      if (!x) fail(line_no, std::string(kNames[k]), c.empty() ? "missing number" : "must be a finite number, got " + quoted(c));
+      if (!x) fail(line_no, std::string(kNames[k]), c.empty() ? "missing number" : "must be a finite number, got " + in_quotes(c));
       return *x;
     };
     const std::string label(cell(kBody));
@@ -260,10 +265,10 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
       }
     } else {
       if (shape != tr.shape)
-        fail(line_no, "shape", "body " + quoted(label) + " has shape " + quoted(tr.shape) + " on line " +
+        fail(line_no, "shape", "body " + in_quotes(label) + " has shape " + in_quotes(tr.shape) + " on line " +
                                    std::to_string(tr.size_line) + "; a body's shape cannot change");
       if (radius && tr.radius && *radius != *tr.radius)
-        fail(line_no, "radius", "body " + quoted(label) + " has radius " + std::to_string(*tr.radius) + " on line " +
+        fail(line_no, "radius", "body " + in_quotes(label) + " has radius " + std::to_string(*tr.radius) + " on line " +
                                     std::to_string(tr.size_line) + "; a body's radius cannot change");
       if (!radius && shape.empty() && !options.radius && where[kRadius] >= 0)
         fail(line_no, "radius", "missing number (or give a shape)");
@@ -284,7 +289,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
   });
   if (numeric)  // "07" and "7" would be two bodies with one index: refuse leading zeros
     for (const std::string& l : order)
-      if (l.size() > 1 && l[0] == '0') fail(tracks[l].frames.front().line, "body", "label " + quoted(l) + " has a leading zero");
+      if (l.size() > 1 && l[0] == '0') fail(tracks[l].frames.front().line, "body", "label " + in_quotes(l) + " has a leading zero");
 
   // Shapes: the named ones, then inline specs as they are first used.
   nlohmann::json shapes = options.shapes.is_array() ? options.shapes : nlohmann::json::array();
@@ -298,7 +303,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
     if (tr.shape.empty() || known(tr.shape)) continue;
     const auto j = inline_shape(tr.shape, file, "line " + std::to_string(tr.size_line) + ": shape");
     if (!j)
-      fail(tr.size_line, "shape", "unknown shape " + quoted(tr.shape) +
+      fail(tr.size_line, "shape", "unknown shape " + in_quotes(tr.shape) +
                                       " (not in --shapes; inline shapes are sphere:R, capsule:HALF_LENGTH,R, box:HX,HY,HZ)");
     shapes.push_back(*j);
   }
@@ -322,15 +327,15 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
     for (std::size_t k = 1; k < tr.frames.size(); ++k)
       if (tr.frames[k].t == tr.frames[k - 1].t)
         fail(std::max(tr.frames[k].line, tr.frames[k - 1].line), "t",
-             "body " + quoted(label) + " has two frames at t = " + std::to_string(tr.frames[k].t) + " (lines " +
+             "body " + in_quotes(label) + " has two frames at t = " + std::to_string(tr.frames[k].t) + " (lines " +
                  std::to_string(std::min(tr.frames[k].line, tr.frames[k - 1].line)) + " and " +
                  std::to_string(std::max(tr.frames[k].line, tr.frames[k - 1].line)) + ")");
     if (tr.frames.front().t != t_min)
-      fail(tr.frames.front().line, "t", "body " + quoted(label) + " starts at t = " + std::to_string(tr.frames.front().t) +
+      fail(tr.frames.front().line, "t", "body " + in_quotes(label) + " starts at t = " + std::to_string(tr.frames.front().t) +
                                             ", after the file's first time " + std::to_string(t_min) +
                                             " (every body needs a frame at the first and the last time)");
     if (tr.frames.back().t != t_max)
-      fail(tr.frames.back().line, "t", "body " + quoted(label) + " ends at t = " + std::to_string(tr.frames.back().t) +
+      fail(tr.frames.back().line, "t", "body " + in_quotes(label) + " ends at t = " + std::to_string(tr.frames.back().t) +
                                            ", before the file's last time " + std::to_string(t_max) +
                                            " (every body needs a frame at the first and the last time)");
     // Scene times; the velocity of each interval from the model's own position at its start.

@@ -138,7 +138,7 @@ TEST_CASE("velocity changes: a Bounded bound misses a jump inside its step (docu
   const ccd::Trajectories traj(s);
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   REQUIRE(truth.events().size() == 1);
-  CHECK(truth.events()[0].enter == 0.0625);
+  CHECK(truth.events()[0].enter == Approx(0.0625).epsilon(0).margin(1e-15));
   ccdlab::RunInput in;
   in.scene = &s;
   in.trajectories = &traj;
