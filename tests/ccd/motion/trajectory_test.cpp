@@ -177,7 +177,7 @@ TEST_CASE("bodies almost at rest on a wall rest instead of bouncing ever faster"
 
 // Velocity changes (docs/formats.md, `velocity_changes`): the velocity jumps, the position
 // is continuous. Dyadic data, so every state below is exact.
-TEST_CASE("velocity changes split the trajectory; the position stays continuous", "[motion][velocity_changes]") {
+TEST_CASE("velocity changes split the trajectory, the position stays continuous", "[motion][velocity_changes]") {
   SECTION("free body: two jumps") {
     ccd::Scene s;
     s.horizon = 1.0;

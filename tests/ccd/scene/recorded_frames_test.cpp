@@ -79,7 +79,7 @@ TEST_CASE("recorded frames: linear between frames, rows in any order", "[scene][
   CHECK(traj.position(0, 1.0).isApprox(Vec3(2, 2, 0), 1e-15));
 }
 
-TEST_CASE("recorded frames: scene time 0 is the file's first time; unchanged velocities are left out",
+TEST_CASE("recorded frames: scene time 0 is the file's first time, unchanged velocities are left out",
           "[scene][import]") {
   const auto r = import_text("body,t,x,y,z,radius\nball,10,0,0,0,1\nball,10.5,1,0,0,1\nball,11,2,0,0,1\n"
                              "ball,12,2,0,0,1\n");
@@ -121,7 +121,7 @@ TEST_CASE("recorded frames: positions at the frames do not drift over many frame
   CHECK(worst <= 1e-11);  // |x| ~ 1e3: a few ulps, not 2000 of them
 }
 
-TEST_CASE("recorded frames: shapes and orientations; constant angular velocity along the shortest arc",
+TEST_CASE("recorded frames: shapes and orientations, constant angular velocity along the shortest arc",
           "[scene][import]") {
   // A box turning about z by a quarter turn per half second, then resting; a capsule from
   // --shapes; a sphere whose orientation columns are ignored.
