@@ -62,14 +62,14 @@ std::optional<PolygonDefect> polygon_defect(const std::vector<Vec3>& v) {
   if (!(an.norm() > 0.0)) return PolygonDefect{-1, "has zero area"};
   const Vec3 normal = an.normalized();
   // Planar: distances from the plane through the centroid along the area normal; the
-  // worst vertex is named.
-  Vec3 centroid = Vec3::Zero();
+  // worst vertex is named. Everything relative to v_0 (differences of nearby coordinates
+  // are exact), so the test means the same far from the origin.
+  Vec3 centroid = Vec3::Zero();  // relative to v_0
   for (const Vec3& x : v) centroid += (x - v[0]) / static_cast<double>(n);
-  centroid += v[0];
   std::size_t worst = 0;
   double worst_h = -1.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double h = std::fabs(normal.dot(v[i] - centroid));
+    const double h = std::fabs(normal.dot((v[i] - v[0]) - centroid));
     if (h > worst_h) {
       worst_h = h;
       worst = i;
