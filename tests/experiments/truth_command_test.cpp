@@ -182,7 +182,7 @@ TEST_CASE("ccdlab truth on a rigid scene writes certified brackets that read bac
   }
 }
 
-TEST_CASE("ccdlab truth on a scene with scenery writes static events; bad scenery exits 2", "[experiments][truth][scenery]") {
+TEST_CASE("ccdlab truth on a scene with scenery writes static events, bad scenery exits 2", "[experiments][truth][scenery]") {
   TempDir tmp;
   // Body 0 falls through the floor polygon (|z| <= 1 for t in [1, 3]); body 1 stays away;
   // body 2 grazes the polygon's edge x = 4 at t = 2 (distance sqrt(1 + (2 - t)^2) >= 1).
