@@ -21,11 +21,15 @@ extern const Generator kSticksGenerator;
 extern const Generator kPlatesGenerator;
 extern const Generator kCratesGenerator;
 extern const Generator kRocksGenerator;
+extern const Generator kFloorRampGenerator;
+extern const Generator kBowlGenerator;
+extern const Generator kPinballGenerator;
 
 std::span<const Generator> generators() {
   static const Generator table[] = {kGasGenerator,     kRainGenerator,    kBulletsGenerator, kSwarmGenerator,
                                     kLatticeGenerator, kMixedGenerator,   kGrazingGenerator, kSticksGenerator,
-                                    kPlatesGenerator,  kCratesGenerator,  kRocksGenerator};
+                                    kPlatesGenerator,  kCratesGenerator,  kRocksGenerator,  kFloorRampGenerator,
+                                    kBowlGenerator,    kPinballGenerator};
   return table;
 }
 
@@ -48,6 +52,15 @@ namespace {
 void apply_offset(ccd::Scene& scene, const ccd::Vec3& offset) {
   if (offset.isZero(0.0)) return;
   for (ccd::Body& b : scene.bodies) b.position += offset;
+  // Scenery moves by the same additions (its planes derived again); the mesh's vertices
+  // too, so that the scene writes back what it holds.
+  for (ccd::StaticPolygon& poly : scene.scenery) {
+    std::vector<ccd::Vec3> vs = poly.vertices;
+    for (ccd::Vec3& x : vs) x += offset;
+    poly = ccd::polygon_from_vertices(std::move(vs));
+  }
+  if (scene.scenery_mesh)
+    for (ccd::Vec3& x : scene.scenery_mesh->vertices) x += offset;
   if (!scene.box) return;
   scene.box->min += offset;
   scene.box->max += offset;

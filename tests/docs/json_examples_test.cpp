@@ -41,7 +41,7 @@ void check_document(const nlohmann::json& j, const std::string& where) {
   INFO(where);
   if (!j.is_object() || !j.contains("format")) return;
   const std::string format = j["format"].get<std::string>();
-  if (format == "ccdlab-scene/1") {
+  if (format == "ccdlab-scene/1" || format == "ccdlab-scene/2") {
     CHECK_NOTHROW(ccd::scene_from_json(j, where));
   } else if (format == "ccdlab-experiment/1") {
     ccdlab::Experiment e;

@@ -4,6 +4,7 @@
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/truth_io.hpp>
 
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cstdio>
 #include <cstdlib>
@@ -179,4 +180,39 @@ TEST_CASE("ccdlab truth on a rigid scene writes certified brackets that read bac
     CHECK(e.exit_error < 5e-8);
     CHECK_FALSE(e.grazing);
   }
+}
+
+TEST_CASE("ccdlab truth on a scene with scenery writes static events, bad scenery exits 2", "[experiments][truth][scenery]") {
+  TempDir tmp;
+  // Body 0 falls through the floor polygon (|z| <= 1 for t in [1, 3]); body 1 stays away;
+  // body 2 grazes the polygon's edge x = 4 at t = 2 (distance sqrt(1 + (2 - t)^2) >= 1).
+  json s = json::parse(R"({"format": "ccdlab-scene/2", "horizon": 4.0,
+    "box": {"min": [-20,-20,-20], "max": [20,20,20]},
+    "bodies": [{"radius": 1, "position": [0,0,2], "velocity": [0,0,-1]},
+               {"radius": 1, "position": [10,10,10]},
+               {"radius": 1, "position": [5,0,2], "velocity": [0,0,-1]}],
+    "scenery": [{"polygon": [[-4,-4,0], [4,-4,0], [4,4,0], [-4,4,0]]}]})");
+  write(tmp / "s.json", s.dump());
+  const fs::path out = tmp / "t.json";
+  const Run r = run(tmp, (tmp / "s.json").string() + " -o " + out.string());
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("static       2 events (1 tangent) against 1 polygons") != std::string::npos);
+  const ccd::TruthFile t = ccd::load_truth(out.string());
+  CHECK(t.has_scenery);
+  REQUIRE(t.static_events.size() == 2);
+  CHECK(t.static_events[0] == ccd::StaticEvent{0, 0, 1.0, 3.0});
+  CHECK(t.static_events[1].body == 2);
+  CHECK(t.static_events[1].enter == t.static_events[1].exit);
+  CHECK(t.static_events[1].enter == Approx(2.0).margin(1e-7));
+  CHECK(t.scene_sha256 == ccd::scene_digest(ccd::load_scene((tmp / "s.json").string())));
+
+  s["scenery"][0]["polygon"][2] = {4, 4, 0.5};
+  write(tmp / "bad.json", s.dump());
+  const fs::path bad_out = tmp / "bad_t.json";
+  const Run b = run(tmp, (tmp / "bad.json").string() + " -o " + bad_out.string());
+  CHECK(b.status == 2);
+  CHECK(b.err.find("bad.json: scenery[0].polygon[") != std::string::npos);
+  CHECK(b.err.find("not planar") != std::string::npos);
+  CHECK(std::count(b.err.begin(), b.err.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(bad_out));
 }
