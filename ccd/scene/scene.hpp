@@ -115,8 +115,12 @@ struct Scene {
   std::vector<Body> bodies;
   /// Empty (every body a plain sphere without spin), or one entry per body.
   std::vector<RigidBody> rigid;
-  /// Static polygons (ccd/scene/scenery.hpp): empty for a scene without scenery.
+  /// Static polygons (ccd/scene/scenery.hpp): empty for a scene without scenery. The
+  /// `scenery` polygons of the file, then one triangle per mesh triangle.
   std::vector<StaticPolygon> scenery;
+  /// The mesh the last scenery_mesh->triangles.size() entries of `scenery` came from (kept
+  /// so that the scene is written back as read); empty when there is none.
+  std::optional<SceneryMesh> scenery_mesh;
 
   /// Some body names a shape or spins: the scene needs `ccdlab-scene/2`.
   bool is_rigid() const;

@@ -99,12 +99,45 @@ json shape_to_json(const Shape& s) {
 
 }  // namespace
 
+namespace {
+
+// The scenery of a scene (docs/scenery.md): every polygon (and mesh triangle) a valid
+// static polygon, within the magnitude limit, and scenery only with spheres in a
+// reflecting box (wrap-around and non-sphere shapes against scenery are not supported).
+template <class Magnitude>
+void validate_scenery(const Scene& s, const Reader& r, Magnitude&& magnitude) {
+  if (s.scenery.empty() && !s.scenery_mesh) return;
+  const std::size_t mesh_triangles = s.scenery_mesh ? s.scenery_mesh->triangles.size() : 0;
+  if (mesh_triangles > s.scenery.size())
+    r.fail("scenery_mesh.triangles", "has more triangles than the scene has scenery polygons");
+  const std::size_t polygons = s.scenery.size() - mesh_triangles;
+  for (std::size_t i = 0; i < s.scenery.size(); ++i) {
+    const bool mesh = i >= polygons;
+    const std::string p = mesh ? "scenery_mesh.triangles[" + std::to_string(i - polygons) + "]"
+                               : "scenery[" + std::to_string(i) + "].polygon";
+    const StaticPolygon& poly = s.scenery[i];
+    for (std::size_t k = 0; k < poly.vertices.size(); ++k)
+      for (int c = 0; c < 3; ++c)
+        magnitude(poly.vertices[k][c], p + "[" + std::to_string(k) + "][" + std::to_string(c) + "]");
+    if (const auto d = polygon_defect(poly.vertices))
+      r.fail(d->vertex < 0 ? p : p + "[" + std::to_string(d->vertex) + "]", d->reason);
+    if (!(std::fabs(poly.normal.norm() - 1.0) <= 1e-12))
+      r.fail(p, "normal must be the unit normal of the plane (ccd::polygon_from_vertices)");
+  }
+  if (s.box && s.box->any_wrap())
+    r.fail("scenery", "static scenery in a box that wraps around (box.boundary) is not supported");
+  if (s.has_non_spheres())
+    r.fail("scenery", "static scenery with non-sphere shapes is not supported (plain and spinning spheres only)");
+}
+
+}  // namespace
+
 Scene scene_from_json(const json& j, const std::string& file) {
   Reader r{file};
   if (!j.is_object()) r.fail("", "a scene must be a JSON object");
   // Version-2 names are known in both versions: a version-1 file that uses one is told
   // it needs version 2 (below), not that the field is unknown.
-  r.only_fields(j, "", {"format", "horizon", "gravity", "box", "shapes", "bodies"});
+  r.only_fields(j, "", {"format", "horizon", "gravity", "box", "shapes", "bodies", "scenery", "scenery_mesh"});
   const json& format = r.require(j, "format", "");
   if (!format.is_string() ||
       (format.get<std::string>() != kSceneFormatV1 && format.get<std::string>() != kSceneFormat))
@@ -217,6 +250,50 @@ Scene scene_from_json(const json& j, const std::string& file) {
     s.bodies.push_back(std::move(body));
     if (v2) s.rigid.push_back(std::move(rigid));
   }
+  // Static scenery (docs/scenery.md): polygons, then the mesh's triangles.
+  if (auto it = j.find("scenery"); it != j.end()) {
+    if (!v2) r.fail("scenery", "needs format \"ccdlab-scene/2\"");
+    if (!it->is_array()) r.fail("scenery", "must be an array of {\"polygon\": [[x, y, z], ...]}");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const std::string p = "scenery[" + std::to_string(i) + "]";
+      const json& o = (*it)[i];
+      if (!o.is_object()) r.fail(p, "must be an object {\"polygon\": [[x, y, z], ...]}");
+      r.only_fields(o, p, {"polygon"});
+      const json& poly = r.require(o, "polygon", p);
+      if (!poly.is_array()) r.fail(p + ".polygon", "must be an array of [x, y, z] vertices");
+      std::vector<Vec3> vs;
+      for (std::size_t k = 0; k < poly.size(); ++k) vs.push_back(r.vec3(poly[k], p + ".polygon[" + std::to_string(k) + "]"));
+      s.scenery.push_back(polygon_from_vertices(std::move(vs)));
+    }
+  }
+  if (auto it = j.find("scenery_mesh"); it != j.end()) {
+    if (!v2) r.fail("scenery_mesh", "needs format \"ccdlab-scene/2\"");
+    if (!it->is_object()) r.fail("scenery_mesh", "must be an object with vertices and triangles");
+    r.only_fields(*it, "scenery_mesh", {"vertices", "triangles"});
+    SceneryMesh mesh;
+    const json& vs = r.require(*it, "vertices", "scenery_mesh");
+    if (!vs.is_array()) r.fail("scenery_mesh.vertices", "must be an array of [x, y, z]");
+    for (std::size_t k = 0; k < vs.size(); ++k)
+      mesh.vertices.push_back(r.vec3(vs[k], "scenery_mesh.vertices[" + std::to_string(k) + "]"));
+    const json& ts = r.require(*it, "triangles", "scenery_mesh");
+    if (!ts.is_array()) r.fail("scenery_mesh.triangles", "must be an array of [i, j, k] vertex indices");
+    for (std::size_t k = 0; k < ts.size(); ++k) {
+      const std::string p = "scenery_mesh.triangles[" + std::to_string(k) + "]";
+      if (!ts[k].is_array() || ts[k].size() != 3) r.fail(p, "must be an array of 3 vertex indices");
+      std::array<std::uint32_t, 3> tri{};
+      for (std::size_t c = 0; c < 3; ++c) {
+        const std::string f = p + "[" + std::to_string(c) + "]";
+        tri[c] = r.index(ts[k][c], f);
+        if (tri[c] >= mesh.vertices.size())
+          r.fail(f, "vertex index " + std::to_string(tri[c]) + " out of range (the mesh has " +
+                        std::to_string(mesh.vertices.size()) + " vertices)");
+      }
+      mesh.triangles.push_back(tri);
+      s.scenery.push_back(
+          polygon_from_vertices({mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]}));
+    }
+    s.scenery_mesh = std::move(mesh);
+  }
   // A version-2 file of plain spheres without spin is a sphere scene: no side table.
   if (std::none_of(s.rigid.begin(), s.rigid.end(), [](const RigidBody& x) { return x.shape != kNoShape || x.spins(); }))
     s.rigid.clear();
@@ -237,6 +314,7 @@ void validate_scene(const Scene& s, const std::string& file) {
   };
   magnitude(s.horizon, "horizon");
   if (s.horizon <= 0.0) r.fail("horizon", "must be > 0");
+  validate_scenery(s, r, magnitude);
   finite3(s.gravity, "gravity");
   if (s.box) {
     finite3(s.box->min, "box.min");
@@ -390,7 +468,7 @@ Scene load_scene(const std::string& path) { return scene_from_json(read_json_fil
 json scene_to_json(const Scene& s) {
   auto v = [](const Vec3& x) { return json::array({x.x(), x.y(), x.z()}); };
   json j;
-  const bool v2 = s.is_rigid();
+  const bool v2 = s.is_rigid() || !s.scenery.empty();
   j["format"] = v2 ? kSceneFormat : kSceneFormatV1;
   j["horizon"] = s.horizon;
   j["gravity"] = v(s.gravity);
@@ -443,6 +521,23 @@ json scene_to_json(const Scene& s) {
     bodies.push_back(std::move(jb));
   }
   j["bodies"] = std::move(bodies);
+  // Scenery only when present, so scenes without it and their digests stay as they were.
+  const std::size_t mesh_triangles = s.scenery_mesh ? s.scenery_mesh->triangles.size() : 0;
+  if (s.scenery.size() > mesh_triangles) {
+    json sc = json::array();
+    for (std::size_t i = 0; i + mesh_triangles < s.scenery.size(); ++i) {
+      json poly = json::array();
+      for (const Vec3& x : s.scenery[i].vertices) poly.push_back(v(x));
+      sc.push_back({{"polygon", std::move(poly)}});
+    }
+    j["scenery"] = std::move(sc);
+  }
+  if (s.scenery_mesh) {
+    json vs = json::array(), ts = json::array();
+    for (const Vec3& x : s.scenery_mesh->vertices) vs.push_back(v(x));
+    for (const auto& t : s.scenery_mesh->triangles) ts.push_back(json::array({t[0], t[1], t[2]}));
+    j["scenery_mesh"] = {{"vertices", std::move(vs)}, {"triangles", std::move(ts)}};
+  }
   return j;
 }
 

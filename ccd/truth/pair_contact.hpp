@@ -19,18 +19,13 @@
 // Degenerate cases: a == b, u1 < u0 or a body index out of range are the caller's error
 // (checked by assertions only); an empty result means no contact in [u0, u1].
 #include <ccd/motion/trajectory.hpp>
+#include <ccd/queries/contact_interval.hpp>
 
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace ccd {
-
-struct ContactInterval {
-  double enter = 0.0;
-  double exit = 0.0;
-  bool operator==(const ContactInterval&) const = default;
-};
 
 /// Largest gap between two contact intervals of a pair that is still merged.
 double merge_gap(double horizon);

@@ -25,6 +25,10 @@ json event_json(const TruthFile& t, std::size_t i) {
   return j;
 }
 
+json static_event_json(const StaticEvent& e) {
+  return {{"body", e.body}, {"polygon", e.polygon}, {"enter", e.enter}, {"exit", e.exit}};
+}
+
 bool is_digest(const std::string& s) {
   if (s.size() != 64) return false;
   for (char c : s)
@@ -37,8 +41,14 @@ bool is_digest(const std::string& s) {
 json truth_to_json(const TruthFile& t) {
   json events = json::array();
   for (std::size_t i = 0; i < t.events.size(); ++i) events.push_back(event_json(t, i));
-  return {{"format", kTruthFormat}, {"horizon", t.horizon}, {"scene_sha256", t.scene_sha256},
-          {"events", std::move(events)}};
+  json j = {{"format", kTruthFormat}, {"horizon", t.horizon}, {"scene_sha256", t.scene_sha256},
+            {"events", std::move(events)}};
+  if (t.has_scenery) {
+    json st = json::array();
+    for (const StaticEvent& e : t.static_events) st.push_back(static_event_json(e));
+    j["static_events"] = std::move(st);
+  }
+  return j;
 }
 
 std::string truth_to_text(const TruthFile& t) {
@@ -52,7 +62,16 @@ std::string truth_to_text(const TruthFile& t) {
     s += i == 0 ? "\n  " : ",\n  ";
     s += event_json(t, i).dump();
   }
-  s += t.events.empty() ? "]}\n" : "\n ]}\n";
+  s += t.events.empty() ? "]" : "\n ]";
+  if (t.has_scenery) {
+    s += ",\n \"static_events\": [";
+    for (std::size_t i = 0; i < t.static_events.size(); ++i) {
+      s += i == 0 ? "\n  " : ",\n  ";
+      s += static_event_json(t.static_events[i]).dump();
+    }
+    s += t.static_events.empty() ? "]" : "\n ]";
+  }
+  s += "}\n";
   return s;
 }
 
@@ -106,6 +125,27 @@ TruthFile truth_from_json(const json& j, const std::string& file) {
     errors.push_back(err);
   }
   if (any_error) t.errors = std::move(errors);
+  if (j.contains("static_events")) {
+    const json& st = j.at("static_events");
+    if (!st.is_array()) r.fail("static_events", "must be an array");
+    t.has_scenery = true;
+    t.static_events.reserve(st.size());
+    for (std::size_t i = 0; i < st.size(); ++i) {
+      const std::string p = "static_events[" + std::to_string(i) + "]";
+      const json& e = st[i];
+      if (!e.is_object()) r.fail(p, "must be an object with body, polygon, enter and exit");
+      StaticEvent ev;
+      ev.body = r.index(r.require(e, "body", p), p + ".body");
+      ev.polygon = r.index(r.require(e, "polygon", p), p + ".polygon");
+      ev.enter = r.number(r.require(e, "enter", p), p + ".enter");
+      ev.exit = r.number(r.require(e, "exit", p), p + ".exit");
+      if (ev.enter < 0.0 || ev.enter > t.horizon) r.fail(p + ".enter", "must lie in [0, horizon]");
+      if (ev.exit < ev.enter || ev.exit > t.horizon) r.fail(p + ".exit", "must lie in [enter, horizon]");
+      if (!t.static_events.empty() && !static_event_order(t.static_events.back(), ev))
+        r.fail(p, "static events must be sorted by (enter, body, polygon) without duplicates");
+      t.static_events.push_back(ev);
+    }
+  }
   return t;
 }
 

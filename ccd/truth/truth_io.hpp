@@ -12,6 +12,11 @@
 // absent = false). They live in TruthFile::errors, a side table that stays empty when
 // every event is exact, so ContactEvent keeps its size.
 //
+// Scenes with static scenery (docs/scenery.md) add, after `events`,
+//   "static_events": [{"body": i, "polygon": j, "enter": t0, "exit": t1}, ...]
+// (polygon = index in the scene's scenery, mesh triangles after the polygons), sorted by
+// (enter, body, polygon); the field is absent for a scene without scenery, so such
+// truth files are unchanged.
 // Times are written with 17 significant digits, so a file round-trips bit for bit.
 // Validation on reading: malformed JSON, a missing or mistyped field, a non-finite
 // number, horizon <= 0, a digest that is not 64 lowercase hex digits, a or b not a
@@ -19,6 +24,7 @@
 // error, events out of (enter, a, b) order: each throws InputError naming the file and
 // the field (`events[3].exit`). Unknown fields are ignored.
 #include <ccd/truth/ground_truth.hpp>
+#include <ccd/truth/static_truth.hpp>
 
 #include <nlohmann/json.hpp>
 #include <string>
@@ -42,6 +48,10 @@ struct TruthFile {
   std::string scene_sha256;
   /// One entry per event, or empty when every event is exact.
   std::vector<EventError> errors;
+  /// The scene has scenery: `static_events` is written (possibly empty) and was read.
+  bool has_scenery = false;
+  /// Body-scenery events, sorted by (enter, body, polygon); empty without scenery.
+  std::vector<StaticEvent> static_events;
   int version = 2;  ///< the format version read (written files are version 2)
 };
 

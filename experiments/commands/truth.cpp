@@ -11,6 +11,7 @@
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/integer_text.hpp>
 
@@ -29,7 +30,9 @@ constexpr const char* kUsage =
     "usage: ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet]\n"
     "\n"
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
-    "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md).\n"
+    "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md), and,\n"
+    "for a scene with scenery, every interval during which a body touches a static polygon\n"
+    "(static_events, docs/scenery.md).\n"
     "\n"
     "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"
     "                before the work: a regular file, not the scene, in a folder that takes a file\n"
@@ -127,6 +130,13 @@ int run_truth(std::span<const std::string> args) {
     } else {
       result = ccd::compute_truth_detailed(traj, options);
     }
+    // Static scenery (docs/scenery.md): exact body-polygon events.
+    std::vector<ccd::StaticEvent> static_events;
+    if (!scene.scenery.empty()) {
+      doing = "computing the static events of " + std::to_string(scene.bodies.size()) + " bodies against " +
+              std::to_string(scene.scenery.size()) + " polygons";
+      static_events = ccd::compute_static_truth(traj, scene.scenery, options.threads);
+    }
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     doing = "writing " + out_path;
@@ -137,6 +147,8 @@ int run_truth(std::span<const std::string> args) {
       file.scene_sha256 = ccd::scene_digest(scene);
       if (std::any_of(errors.begin(), errors.end(), [](const ccd::EventError& x) { return x != ccd::EventError{}; }))
         file.errors = errors;
+      file.has_scenery = !scene.scenery.empty();
+      file.static_events = static_events;
       output->commit(ccd::truth_to_text(file));
     }
     if (quiet || out_path == "-") return 0;
@@ -151,6 +163,12 @@ int run_truth(std::span<const std::string> args) {
               << "pairs        " << st.pairs_in_contact << " in contact; " << st.candidate_pair_windows
               << " candidate pair-windows in " << st.windows << " windows, " << st.candidate_runs
               << " solved exactly\n";
+    if (!scene.scenery.empty()) {
+      std::size_t static_tangent = 0;
+      for (const ccd::StaticEvent& e : static_events) static_tangent += e.enter == e.exit;
+      std::cout << "static       " << static_events.size() << " events (" << static_tangent << " tangent) against "
+                << scene.scenery.size() << " polygons\n";
+    }
     char time_text[160];
     std::snprintf(time_text, sizeof time_text, "%.3f s: load %.3f s, trajectories %.3f s, truth %.3f s (%u threads)",
                   secs(start, done), secs(start, loaded), secs(loaded, built), secs(built, done), st.threads);

@@ -142,3 +142,33 @@ TEST_CASE("bad truth files name the file and the field", "[truth][io]") {
     CHECK(error_of(j) == "t.json: events[0].enter: must be a number");
   }
 }
+
+TEST_CASE("truth files carry static events only for scenes with scenery", "[truth][io][scenery]") {
+  TruthFile t = sample();
+  // No scenery: no static_events field at all (files of sphere scenes are unchanged).
+  CHECK(ccd::truth_to_text(t).find("static_events") == std::string::npos);
+  CHECK_FALSE(ccd::truth_to_json(t).contains("static_events"));
+  // Scenery without contacts: an empty list.
+  t.has_scenery = true;
+  CHECK(ccd::truth_to_text(t).find("\"static_events\": []") != std::string::npos);
+  t.static_events = {{2, 0, 0.0, 0.1 + 0.2}, {0, 5, 1.0 / 3.0, 1.0 / 3.0}, {1, 5, 1.0 / 3.0, 2.0}};
+  const TruthFile back = ccd::truth_from_json(json::parse(ccd::truth_to_text(t)), "t.json");
+  CHECK(back.has_scenery);
+  CHECK(back.static_events == t.static_events);
+  CHECK(back.events == t.events);
+  const TruthFile back2 = ccd::truth_from_json(ccd::truth_to_json(t), "t.json");
+  CHECK(back2.static_events == t.static_events);
+
+  json j = ccd::truth_to_json(t);
+  j["static_events"][1]["polygon"] = -1;
+  CHECK(error_of(j).find("static_events[1].polygon") != std::string::npos);
+  j = ccd::truth_to_json(t);
+  j["static_events"][2]["exit"] = 3.0;
+  CHECK(error_of(j).find("static_events[2].exit") != std::string::npos);
+  j = ccd::truth_to_json(t);
+  std::swap(j["static_events"][1], j["static_events"][2]);
+  CHECK(error_of(j).find("static_events[2]") != std::string::npos);
+  j = ccd::truth_to_json(t);
+  j["static_events"] = 3;
+  CHECK(error_of(j).find("static_events") != std::string::npos);
+}

@@ -1,0 +1,104 @@
+#include <ccd/truth/static_truth.hpp>
+
+#include <ccd/geometry/aabb.hpp>
+#include <ccd/queries/sphere_polygon.hpp>
+#include <ccd/truth/pair_contact.hpp>
+#include <ccd/util/parallel_for.hpp>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <tuple>
+
+namespace ccd {
+namespace {
+
+Aabb polygon_box(const StaticPolygon& poly) {
+  if (poly.vertices.empty()) return {};
+  Aabb box{poly.vertices.front(), poly.vertices.front()};
+  for (const Vec3& x : poly.vertices) box.merge({x, x});
+  return box;
+}
+
+// The piece's centre box over [u0, u1] grown by r and a margin that covers the rounding
+// of the positions evaluated from different expansion points (relative 1e-9 of the
+// magnitudes, far above it): the query's own rejection test is the sharp one.
+Aabb piece_box(const Piece& q, double r, double u0, double u1) {
+  Aabb box = q.centre_bounds(u0, u1);
+  const double m = r * (1.0 + 1e-9) + 1e-9 * (box.lo.cwiseAbs().maxCoeff() + box.hi.cwiseAbs().maxCoeff() + r);
+  box.lo.array() -= m;
+  box.hi.array() += m;
+  return box;
+}
+
+// Appends the merged contact intervals of `body` with `poly` (box `pbox`) within [u0, u1].
+void append_intervals(const Trajectories& traj, std::uint32_t body, const StaticPolygon& poly, const Aabb& pbox,
+                      double u0, double u1, std::vector<ContactInterval>& scratch, std::vector<ContactInterval>& out) {
+  const std::size_t first = out.size();
+  const double gap = merge_gap(traj.horizon());
+  const auto ps = traj.pieces(body);
+  const double r = traj.radius(body);
+  auto it = std::lower_bound(ps.begin(), ps.end(), u0, [](const Piece& q, double x) { return q.t1 < x; });
+  for (; it != ps.end() && it->t0 <= u1; ++it) {
+    const Piece& q = *it;
+    if (!piece_box(q, r, std::max(u0, q.t0), std::min(u1, q.t1)).overlaps(pbox)) continue;
+    scratch.clear();
+    sphere_polygon_contacts(q.p, q.v, q.a, q.t0, r, poly, q.t0, q.t1, scratch);
+    for (const ContactInterval& c : scratch) {
+      if (c.exit < u0 || c.enter > u1) continue;
+      const double enter = std::max(c.enter, u0), exit = std::min(c.exit, u1);
+      if (out.size() > first && enter <= out.back().exit + gap) {
+        out.back().exit = std::max(out.back().exit, exit);
+      } else {
+        out.push_back({enter, exit});
+      }
+    }
+  }
+}
+
+}  // namespace
+
+bool static_event_order(const StaticEvent& x, const StaticEvent& y) {
+  return std::tie(x.enter, x.body, x.polygon) < std::tie(y.enter, y.body, y.polygon);
+}
+
+void body_polygon_intervals(const Trajectories& traj, std::uint32_t body, const StaticPolygon& poly, double u0,
+                            double u1, std::vector<ContactInterval>& out) {
+  assert(body < traj.size());
+  if (!(u1 >= u0) || poly.vertices.size() < 3) return;
+  std::vector<ContactInterval> scratch;
+  append_intervals(traj, body, poly, polygon_box(poly), u0, u1, scratch, out);
+}
+
+std::vector<StaticEvent> compute_static_truth(const Trajectories& traj, std::span<const StaticPolygon> scenery,
+                                              unsigned threads) {
+  std::vector<StaticEvent> events;
+  if (scenery.empty() || traj.size() == 0) return events;
+  std::vector<Aabb> boxes;
+  boxes.reserve(scenery.size());
+  for (const StaticPolygon& p : scenery) boxes.push_back(polygon_box(p));
+  std::vector<std::vector<StaticEvent>> per_body(traj.size());
+  parallel_for(traj.size(), resolve_threads(threads), [&](std::size_t b, unsigned) {
+    const auto body = static_cast<std::uint32_t>(b);
+    // The whole path's box first (grown like piece_box): most polygons end here.
+    Aabb whole = traj.swept_bounds(b, 0.0, traj.horizon());
+    const double m = 1e-9 * (whole.lo.cwiseAbs().maxCoeff() + whole.hi.cwiseAbs().maxCoeff() + traj.radius(b));
+    whole.lo.array() -= m;
+    whole.hi.array() += m;
+    std::vector<ContactInterval> scratch, merged;
+    for (std::size_t j = 0; j < scenery.size(); ++j) {
+      if (!whole.overlaps(boxes[j])) continue;
+      if (scenery[j].vertices.size() < 3) continue;
+      merged.clear();
+      append_intervals(traj, body, scenery[j], boxes[j], 0.0, traj.horizon(), scratch, merged);
+      for (const ContactInterval& c : merged)
+        per_body[b].push_back({body, static_cast<std::uint32_t>(j), c.enter, c.exit});
+    }
+  });
+  for (auto& v : per_body) events.insert(events.end(), v.begin(), v.end());
+  std::sort(events.begin(), events.end(), static_event_order);
+  return events;
+}
+
+}  // namespace ccd
