@@ -1,6 +1,7 @@
 #pragma once
-// Static polygons for the tests, built in C++: the plane (unit normal, offset) computed
-// here from the vertices (Newell's area normal), random convex polygons.
+// Static polygons for the tests, built in C++ (the plane derived by polygon_from_vertices):
+// axis-aligned squares and random convex polygons.
+#include <ccd/scene/scene.hpp>
 #include <ccd/scene/scenery.hpp>
 
 #include <cmath>
@@ -9,18 +10,8 @@
 
 namespace ccd::test {
 
-/// A polygon with `vertices` in order; normal = the normalised area normal (counter-clockwise
-/// seen from it), offset = normal . v_0.
-inline StaticPolygon make_polygon(std::vector<Vec3> vertices) {
-  StaticPolygon p;
-  p.vertices = std::move(vertices);
-  Vec3 n = Vec3::Zero();
-  const Vec3& v0 = p.vertices[0];
-  for (std::size_t i = 1; i + 1 < p.vertices.size(); ++i) n += (p.vertices[i] - v0).cross(p.vertices[i + 1] - v0);
-  p.normal = n.normalized();
-  p.offset = p.normal.dot(v0);
-  return p;
-}
+/// A polygon with `vertices` in order and its derived plane (polygon_from_vertices).
+inline StaticPolygon make_polygon(std::vector<Vec3> vertices) { return polygon_from_vertices(std::move(vertices)); }
 
 /// The axis-aligned square [x0, x0 + s] x [y0, y0 + s] in the plane z = z0 (normal +z).
 inline StaticPolygon square_z(double x0, double y0, double z0, double s) {
@@ -44,6 +35,30 @@ inline StaticPolygon random_polygon(std::mt19937_64& rng, const Vec3& centre, do
   std::vector<Vec3> v;
   for (const double t : angles) v.push_back(centre + a * (ra * std::cos(t)) + b * (rb * std::sin(t)));
   return make_polygon(std::move(v));
+}
+
+/// Balls falling fast (20-30 units/s down, gravity 8) through a stack of thin plates
+/// (sixteen layers 1/4 apart of four 2 x 2 squares, dyadic) and 20 random tilted polygons, in
+/// the box [0, 8] x [0, 8] x [-4, 12]: several plates per body and step of 1/16.
+inline Scene plates_scene(std::uint64_t seed, int bodies) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  Scene s;
+  s.horizon = 1.0;
+  s.gravity = Vec3(0, 0, -8);
+  s.box = WallBox{Vec3(0, 0, -4), Vec3(8, 8, 12)};
+  for (int k = 0; k < 16; ++k)
+    for (int j = 0; j < 4; ++j) s.scenery.push_back(square_z(2.0 * j, 2.0 * (k % 4), 0.25 * k - 1.0, 2.0));
+  for (int k = 0; k < 20; ++k)
+    s.scenery.push_back(random_polygon(rng, Vec3(8 * u(rng), 8 * u(rng), 4 * u(rng) - 1), 0.75));
+  for (int i = 0; i < bodies; ++i) {
+    Body b;
+    b.radius = 0.0625 + 0.125 * u(rng);
+    b.position = Vec3(0.5 + 7 * u(rng), 0.5 + 7 * u(rng), 6 + 4 * u(rng));
+    b.velocity = Vec3(4 * u(rng) - 2, 4 * u(rng) - 2, -20 - 10 * u(rng));
+    s.bodies.push_back(b);
+  }
+  return s;
 }
 
 }  // namespace ccd::test
