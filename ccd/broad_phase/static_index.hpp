@@ -8,9 +8,8 @@
 // longest axis of the centres' box (std::nth_element), leaves of at most `leaf_size`
 // boxes; nodes stored depth-first in one array (a node's left child follows it), so a
 // query walks a small explicit stack. Building is O(n log n); a query is O(log n + k) for k
-// answers on well-spread scenery. benchmarks/static_index_bench.cpp compares it with a
-// uniform grid (faster on uniform scenery of equal-sized polygons; the tree is kept for
-// scenery that mixes sizes: docs/scenery-methods.md quotes the medians and the reasons).
+// answers on well-spread scenery. The choice of a tree over a uniform grid is measured by
+// benchmarks/static_index_bench.cpp (docs/scenery-methods.md quotes the medians).
 // Overlap rule: closed intervals on all three axes (touching counts), as every broad phase
 // (ccd/broad_phase/broad_phase.hpp); a polygon lying in an axis plane has a box of zero
 // thickness and is found by boxes that touch that plane.
