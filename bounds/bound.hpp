@@ -9,6 +9,7 @@
 #include <ccd/motion/body_state.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
+#include <ccd/scene/scenery.hpp>
 
 #include <cstdint>
 #include <limits>
@@ -101,6 +102,19 @@ class Bound {
   virtual void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes);
   /// The window body `body` covers since its last prepare or refresh.
   virtual Window window(std::uint32_t body) const = 0;
+  /// The bound's test of body `body` against a static polygon of the scenery (the static
+  /// index's pair, ccd/broad_phase/static_index.hpp): Disjoint only when the body's bound
+  /// cannot meet the polygon in the body's window, else Possible with the earliest time
+  /// of possible contact in the window. `body_box` is the box this bound wrote for the body
+  /// (prepare or refresh), `polygon_box` the polygon's (polygon_box). The bound keeps no
+  /// scenery of its own: the caller owns the polygons. Default: box overlap,
+  /// `earliest` = the window's start. Bounds with a tighter shape override it (sphere,
+  /// swept_aabb, capsule, horn, enclosing_sphere; docs/scenery-methods.md). Every
+  /// override is conservative as the pair test is: if the body (its true path within the
+  /// window, under the bound's assumption) touches the polygon, the answer is Possible
+  /// with `earliest` no later than the first touch.
+  virtual PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                               const Aabb& polygon_box) const;
 };
 
 }  // namespace ccd

@@ -1,8 +1,11 @@
 #include <bounds/capsule_bound.hpp>
 #include <bounds/rounding.hpp>
+#include <ccd/queries/point_polygon.hpp>
+#include <ccd/queries/segment_polygon.hpp>
 #include <ccd/queries/segment_segment.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -83,6 +86,18 @@ PairTest CapsuleBound::test(std::uint32_t a, std::uint32_t b) const {
   const double t = speed_earliest({x.p0, windows_[a].t0, x.speed, x.body_radius},
                                   {y.p0, windows_[b].t0, y.speed, y.body_radius});
   return PairTest::possible_from(std::min(t, w.t1));
+}
+
+PairTest CapsuleBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                                   const Aabb& polygon_box) const {
+  if (!body_box.overlaps(polygon_box)) return PairTest::disjoint();
+  const Capsule& c = capsules_[body];
+  const double slack = std::max(static_rounding_slack(c.p0, polygon), static_rounding_slack(c.p1, polygon));
+  const double R = c.radius + slack;
+  if (segment_polygon_closest(c.p0, c.p1, polygon).distance_squared > R * R) return PairTest::disjoint();
+  const Window w = windows_[body];
+  const double d = std::sqrt(point_polygon_closest(c.p0, polygon).distance_squared);
+  return PairTest::possible_from(std::min(speed_earliest_static({c.p0, w.t0, c.speed, c.body_radius}, d, slack), w.t1));
 }
 
 }  // namespace ccd

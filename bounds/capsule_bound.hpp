@@ -17,6 +17,8 @@
 // both of which contain the body. Pair test: segment-segment distance (ccd/queries/
 // segment_segment.hpp) <= r1 + r2 (squared compare, with the rounding slack of rounding.hpp
 // on the radii and 16 ulps of |d1|^2 + |d2|^2 + |p1 - p2|^2 for the closest-pair error).
+// Static test: segment-polygon distance (ccd/queries/segment_polygon.hpp) <= the capsule's
+// radius (with the polygon queries' slack, rounding.hpp).
 // Conservative. `earliest`: a capsule carries no timing, so it comes from speed bounds
 // (bounds/speed_earliest.hpp: centre at the window's start, largest speed in the window). Refresh: one body's capsule over its own window.
 #include <bounds/bound.hpp>
@@ -35,6 +37,8 @@ class CapsuleBound final : public Bound {
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                       const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
   Window window(std::uint32_t body) const override { return windows_[body]; }
   const Capsule& capsule(std::uint32_t body) const { return capsules_[body]; }

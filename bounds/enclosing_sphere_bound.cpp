@@ -1,8 +1,11 @@
 #include <bounds/enclosing_sphere_bound.hpp>
 #include <bounds/rounding.hpp>
 #include <bounds/wall_fold.hpp>
+#include <ccd/queries/aabb_polygon.hpp>
+#include <ccd/queries/point_polygon.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace ccd {
@@ -89,6 +92,21 @@ PairTest EnclosingSphereBound::test(std::uint32_t a, std::uint32_t b) const {
   }
   if (!hit) return PairTest::disjoint();
   return PairTest::possible_from(std::min(speed_earliest(x.ball, y.ball), w.t1));
+}
+
+PairTest EnclosingSphereBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                                           const Aabb& polygon_box) const {
+  if (!body_box.overlaps(polygon_box)) return PairTest::disjoint();
+  const Shape& x = shapes_[body];
+  if (x.boxed) {
+    if (!aabb_polygon_overlap(x.box, polygon, aabb_polygon_rounding(x.box, polygon))) return PairTest::disjoint();
+  } else {
+    const double R = x.radius + static_rounding_slack(x.centre, polygon);
+    if (point_polygon_closest(x.centre, polygon).distance_squared > R * R) return PairTest::disjoint();
+  }
+  const double d = std::sqrt(point_polygon_closest(x.ball.centre, polygon).distance_squared);
+  return PairTest::possible_from(std::min(
+      speed_earliest_static(x.ball, d, static_rounding_slack(x.ball.centre, polygon)), windows_[body].t1));
 }
 
 }  // namespace ccd

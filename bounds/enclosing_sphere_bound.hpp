@@ -11,6 +11,8 @@
 // Walls: a body whose sphere of centres reaches a wall plane (min + r, max - r) may reflect;
 // it is replaced by its box, folded into the walls per axis (bounds/wall_fold.hpp), and the
 // pair test becomes sphere-box (squared distance from the centre to the box) or box-box.
+// Static test: distance from the sphere's centre to the polygon <= its radius; a boxed body:
+// its box against the polygon by separating axes (ccd/queries/aabb_polygon.hpp).
 // Conservative whenever |acceleration| <= A (walls included). `earliest`: a static sphere
 // carries no timing, so it comes from speed bounds (bounds/speed_earliest.hpp: the centre
 // at the window's start, speed <= |v| + A h over the window). Refresh: one body's sphere over
@@ -31,6 +33,8 @@ class EnclosingSphereBound final : public Bound {
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                       const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
   Window window(std::uint32_t body) const override { return windows_[body]; }
   const Shape& shape(std::uint32_t body) const { return shapes_[body]; }

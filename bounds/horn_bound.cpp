@@ -1,4 +1,5 @@
 #include <bounds/horn_bound.hpp>
+#include <ccd/queries/aabb_polygon.hpp>
 
 #include <stdexcept>
 
@@ -35,6 +36,18 @@ PairTest HornBound::test(std::uint32_t a, std::uint32_t b) const {
   for (int j = 0; j < m_; ++j) {
     const PairTest o = trapezoid_overlap(za[j], zb[j]);
     if (o.possible()) return o;
+  }
+  return PairTest::disjoint();
+}
+
+PairTest HornBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                                const Aabb& polygon_box) const {
+  if (!body_box.overlaps(polygon_box)) return PairTest::disjoint();
+  const Trapezoid* z = traps_.data() + std::size_t{body} * m_;
+  for (int j = 0; j < m_; ++j) {
+    const Aabb hull = z[j].hull();
+    if (hull.overlaps(polygon_box) && aabb_polygon_overlap(hull, polygon, aabb_polygon_rounding(hull, polygon)))
+      return PairTest::possible_from(z[j].t0);
   }
   return PairTest::disjoint();
 }

@@ -9,6 +9,10 @@
 // linearly: six half-lines in time); true at the first sub-interval where the two
 // trapezoids overlap, with `earliest` = the earliest time of overlap (no contact is
 // possible before it while the bound's assumption holds). O(M) per pair, no allocation.
+// Static test: each sub-interval's trapezoid (its hull: a static polygon does not move)
+// against the polygon by separating axes (ccd/queries/aabb_polygon.hpp: the polygon's
+// normal, the box axes, their cross products with the edges), in time order; Possible at
+// the first that meets it, `earliest` = that sub-interval's start.
 // Walls: a reflection is an unbounded acceleration, so an axis of a sub-interval on which
 // the horn's centre may pass a wall plane uses the static folded interval of that
 // sub-interval (bounds/wall_fold.hpp): conservative across reflections, looser there.
@@ -27,6 +31,8 @@ class HornBound final : public Bound {
   explicit HornBound(int pieces = default_pieces);
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                       const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
   Window window(std::uint32_t body) const override {
     const Trapezoid* z = traps_.data() + std::size_t{body} * m_;

@@ -60,4 +60,17 @@ inline double speed_earliest(const SpeedBall& a, const SpeedBall& b) {
   return std::max(c, widened);
 }
 
+/// The earliest possible contact of a body with a static set at `distance` from the body's
+/// centre at the start of its window (the set does not move, distance is 1-Lipschitz):
+/// t0 + (distance - r - slack) / speed, with the same roundings as speed_earliest; t0 when
+/// the gap is not positive, +infinity for a resting body apart from the set.
+inline double speed_earliest_static(const SpeedBall& a, double distance, double slack) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const double gap = distance - a.radius - slack;
+  if (!(gap > 0.0)) return a.t0;
+  if (!(a.speed > 0.0)) return std::numeric_limits<double>::infinity();
+  const double t = a.t0 + gap / a.speed;
+  return std::max(a.t0, t - 8.0 * eps * (std::abs(t) + std::abs(a.t0)));
+}
+
 }  // namespace ccd

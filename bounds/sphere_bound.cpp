@@ -1,5 +1,6 @@
 #include <bounds/rounding.hpp>
 #include <bounds/sphere_bound.hpp>
+#include <ccd/queries/point_polygon.hpp>
 
 namespace ccd {
 
@@ -21,6 +22,15 @@ PairTest SphereBound::test(std::uint32_t a, std::uint32_t b) const {
   const Ball& y = balls_[b];
   const double R = x.radius + y.radius;
   if ((x.centre - y.centre).squaredNorm() > R * R) return PairTest::disjoint();
+  return PairTest::possible_from(t0_);
+}
+
+PairTest SphereBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                                  const Aabb& polygon_box) const {
+  if (!body_box.overlaps(polygon_box)) return PairTest::disjoint();
+  const Ball& x = balls_[body];
+  const double r = x.radius + static_rounding_slack(x.centre, polygon);
+  if (point_polygon_closest(x.centre, polygon).distance_squared > r * r) return PairTest::disjoint();
   return PairTest::possible_from(t0_);
 }
 

@@ -1,5 +1,9 @@
 #include <bounds/rounding.hpp>
 #include <bounds/swept_aabb_bound.hpp>
+#include <ccd/queries/aabb_polygon.hpp>
+#include <ccd/queries/point_polygon.hpp>
+
+#include <cmath>
 
 #include <algorithm>
 #include <stdexcept>
@@ -43,6 +47,16 @@ PairTest SweptAabbBound::test(std::uint32_t a, std::uint32_t b) const {
   const Window w = common_window(windows_[a], windows_[b]);
   if (w.t0 > w.t1 || !boxes_[a].overlaps(boxes_[b])) return PairTest::disjoint();
   return PairTest::possible_from(std::min(speed_earliest(balls_[a], balls_[b]), w.t1));
+}
+
+PairTest SweptAabbBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
+                                     const Aabb& polygon_box) const {
+  if (!body_box.overlaps(polygon_box)) return PairTest::disjoint();
+  if (!aabb_polygon_overlap(body_box, polygon, aabb_polygon_rounding(body_box, polygon))) return PairTest::disjoint();
+  const SpeedBall& b = balls_[body];
+  const double d = std::sqrt(point_polygon_closest(b.centre, polygon).distance_squared);
+  return PairTest::possible_from(
+      std::min(speed_earliest_static(b, d, static_rounding_slack(b.centre, polygon)), windows_[body].t1));
 }
 
 }  // namespace ccd

@@ -157,6 +157,14 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
     truth_events = ccd::compute_truth(traj, topts);
   }
   const TruthIndex truth(std::move(truth_events));
+  // Body-static events: the stored truth's, else computed (empty without scenery).
+  std::vector<ccd::StaticEvent> static_events;
+  if (!scene.scenery.empty()) {
+    if (options.truth && options.truth->has_scenery)
+      static_events = options.truth->static_events;
+    else
+      static_events = ccd::compute_static_truth(traj, scene.scenery, static_cast<unsigned>(std::max(0, options.threads)));
+  }
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
@@ -173,6 +181,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.rigid = rigid ? &*rigid : nullptr;
   in.truth = &truth;
   in.truth_error = truth_error;
+  in.static_events = static_events;
   in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
   in.repeats = e.repeats;
   in.cancel = options.cancel;
@@ -205,6 +214,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
                   {"seconds", truth_seconds},
                   {"source", options.truth ? options.truth_file : std::string("computed")},
                   {"scene_sha256", ccd::scene_digest(scene)}};
+  if (!scene.scenery.empty()) out["truth"]["static_events"] = static_events.size();
   out["environment"] = environment_json(options.threads);
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();

@@ -31,6 +31,9 @@ struct Counts {
   double cpu_s = 0;  // the calling thread's CPU time over the same span as total_s
   double first_broad_s = 0;  // the broad phase at the first step (sap: the initial sort)
   std::vector<double> lag, penetration;  // per event; NaN = not detected
+  // Scenery: the static stages' pairs, summed over steps, and per static event its lag.
+  std::uint64_t static_candidates = 0, static_bound_candidates = 0, static_confirmed = 0, static_tests_saved = 0;
+  std::vector<double> static_lag;
   bool operator==(const Counts& o) const {
     auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
       if (x.size() != y.size()) return false;
@@ -41,7 +44,10 @@ struct Counts {
     return candidates == o.candidates && bound_candidates == o.bound_candidates && confirmed == o.confirmed &&
            false_positives == o.false_positives && unexpected == o.unexpected && counters == o.counters &&
            rebuilds == o.rebuilds && pair_checks == o.pair_checks && narrow_calls == o.narrow_calls &&
-           refreshes == o.refreshes && steps == o.steps && same(lag, o.lag);
+           refreshes == o.refreshes && steps == o.steps && same(lag, o.lag) &&
+           static_candidates == o.static_candidates && static_bound_candidates == o.static_bound_candidates &&
+           static_confirmed == o.static_confirmed && static_tests_saved == o.static_tests_saved &&
+           same(static_lag, o.static_lag);
   }
 };
 
@@ -83,6 +89,37 @@ void match_contact(const RunInput& in, bool continuous, ccd::BodyPair p, const c
   if (!matched) ++c.unexpected;
 }
 
+// The static events of each (body, polygon) pair, by index into RunInput::static_events.
+using StaticEventIndex = std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>>;
+
+StaticEventIndex index_static_events(std::span<const ccd::StaticEvent> events) {
+  StaticEventIndex index;
+  for (std::uint32_t e = 0; e < events.size(); ++e) index[{events[e].body, events[e].polygon}].push_back(e);
+  return index;
+}
+
+// Matches one static contact found by a narrow call over [t0, t1] with the truth's static
+// events, by the rule of match_contact.
+void match_static_contact(const RunInput& in, const StaticEventIndex& index, bool continuous,
+                          const ccd::StaticContact& sc, double t0, double t1, Counts& c) {
+  const double slack = std::max(1e-9 * in.scene->horizon, in.truth_error);
+  const auto it = index.find({sc.pair.body, sc.pair.polygon});
+  bool matched = false;
+  if (it != index.end()) {
+    for (const std::uint32_t e : it->second) {
+      const ccd::StaticEvent& ev = in.static_events[e];
+      if (ev.exit < t0 - slack || ev.enter > t1 + slack) continue;
+      matched = true;
+      if (continuous && ev.enter < t0 - slack) continue;
+      if (std::isnan(c.static_lag[e])) {
+        const double at = continuous ? std::max(sc.contact.toi, ev.enter) : sc.contact.toi;
+        c.static_lag[e] = std::max(0.0, at - ev.enter);
+      }
+    }
+  }
+  if (!matched) ++c.unexpected;
+}
+
 // A scheduled method: the earliest scheduler over the whole horizon, windows of at most dt.
 Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
   const ccd::Trajectories& traj = *in.trajectories;
@@ -90,6 +127,7 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   const std::size_t n_events = in.truth->events().size();
   c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
   c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
+  c.static_lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
   ccd::ScheduleOptions options;
   options.window = dt;
   options.stale = method.scheduler.options.number("stale");
@@ -133,8 +171,10 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
 
   ccd::PipelineOptions options;
   options.narrow_from_earliest = method.scheduler.options.integer("narrow_from_earliest") != 0;
+  options.kinematic = method.scheduler.options.integer("kinematic") != 0;
   ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make(),
                              ccd::narrow_table(), options);
+  pipeline.set_scenery(in.scene->scenery);
   std::vector<ccd::BodyState> states;
   ccd::StepResult step;
   ccd::StateCursor cursor(traj);
@@ -143,6 +183,8 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   const std::size_t n_events = truth.events().size();
   c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
   c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
+  c.static_lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
+  const StaticEventIndex static_index = index_static_events(in.static_events);
 
   const std::uint64_t samples = sample_count(T, dt);
   const std::uint64_t K = samples == 0 ? 0 : samples - 1;
@@ -184,9 +226,15 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
     c.bound_candidates += step.passed.size();
     c.confirmed += step.contacts.size();
     c.false_positives += step.passed.size() - step.contacts.size();
+    c.static_candidates += step.static_candidates.size();
+    c.static_bound_candidates += step.static_passed.size();
+    c.static_confirmed += step.static_contacts.size();
+    c.static_tests_saved += step.static_tests_saved;
 
     // Bookkeeping against the truth (not timed).
     for (const ccd::PairContact& pc : step.contacts) match_contact(in, continuous, pc.pair, pc.contact, t0, t1, c);
+    for (const ccd::StaticContact& sc : step.static_contacts)
+      match_static_contact(in, static_index, continuous, sc, t0, t1, c);
   }
   c.cpu_s = ccd::thread_cpu_seconds() - cpu_start;
   c.total_s = seconds_since(t_start);
@@ -290,6 +338,14 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
     }
   }
   r.missed = r.events - r.initial_contacts - r.detected;
+  r.static_events = in.static_events.size();
+  for (std::size_t e = 0; e < in.static_events.size(); ++e) {
+    if (in.static_events[e].enter == 0.0)
+      ++r.static_initial_contacts;
+    else if (!std::isnan(c.static_lag[e]))
+      ++r.static_detected;
+  }
+  r.static_missed = r.static_events - r.static_initial_contacts - r.static_detected;
   std::sort(r.missed_events.begin(), r.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
     return x.enter != y.enter ? x.enter < y.enter : x.a != y.a ? x.a < y.a : x.b < y.b;
   });
@@ -297,6 +353,10 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
     r.mean_lag = lag_sum / double(r.detected);
     r.mean_penetration = pen_sum / double(r.detected);
   }
+  r.static_candidates = c.static_candidates;
+  r.static_bound_candidates = c.static_bound_candidates;
+  r.static_confirmed = c.static_confirmed;
+  r.static_tests_saved = c.static_tests_saved;
   r.candidates = c.candidates;
   r.bound_candidates = c.bound_candidates;
   r.confirmed = c.confirmed;
@@ -369,6 +429,14 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"first_broad_seconds", r.first_broad_seconds},
           {"counters", counters_json(r.counters)},
           {"rebuilds", r.rebuilds},
+          {"static_events", r.static_events},
+          {"static_initial_contacts", r.static_initial_contacts},
+          {"static_detected", r.static_detected},
+          {"static_missed", r.static_missed},
+          {"static_candidates", r.static_candidates},
+          {"static_bound_candidates", r.static_bound_candidates},
+          {"static_confirmed", r.static_confirmed},
+          {"static_tests_saved", r.static_tests_saved},
           {"self_check",
            {{"ok", r.self_check_unexpected == 0 && r.self_check_undetected == 0 && r.counts_stable},
             {"unexpected_contacts", r.self_check_unexpected},

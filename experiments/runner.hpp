@@ -20,10 +20,12 @@
 
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
+#include <ccd/truth/static_truth.hpp>
 
 #include <atomic>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +39,8 @@ struct RunInput {
   /// null for sphere scenes (the narrow phase is then sphere x sphere throughout).
   const ccd::RigidMotion* rigid = nullptr;
   const TruthIndex* truth = nullptr;
+  /// The truth's body-static events (ccd/truth/static_truth.hpp); empty without scenery.
+  std::span<const ccd::StaticEvent> static_events;
   /// Seconds: the truth's largest certified error (enter_error, exit_error), widening the
   /// window in which a detection is matched to an event; 0 for an exact truth.
   double truth_error = 0.0;
@@ -103,6 +107,18 @@ struct RunRecord {
   std::uint64_t refreshes = 0;
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
+  /// Scenery (0 for a scene without it): body-static events of the truth, counted like the
+  /// body-body ones (in progress at t = 0 apart; detected by the same rule), the static
+  /// stages' pairs summed over steps, and the static pairs the kinematic principle skipped.
+  /// Scheduled methods run no static stages.
+  std::uint64_t static_events = 0;
+  std::uint64_t static_initial_contacts = 0;
+  std::uint64_t static_detected = 0;
+  std::uint64_t static_missed = 0;
+  std::uint64_t static_candidates = 0;
+  std::uint64_t static_bound_candidates = 0;
+  std::uint64_t static_confirmed = 0;
+  std::uint64_t static_tests_saved = 0;
   bool counts_stable = true;           ///< identical counts over all repeats
   std::vector<MissedEvent> missed_events;  ///< with RunInput::list_missed: sorted by enter (then a, b)
   bool cancelled = false;

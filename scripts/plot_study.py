@@ -26,7 +26,7 @@ import plot  # noqa: E402  (sets the Agg backend)
 import matplotlib.pyplot as plt  # noqa: E402
 
 STUDIES = ("tunnelling", "sap-coherence", "equal-endpoints", "grazing", "precision",
-           "bound-violation", "mixed-sizes", "scaling", "scheduling", "spinning", "fit", "cloth")
+           "bound-violation", "mixed-sizes", "scaling", "scheduling", "spinning", "fit", "cloth", "thin-obstacles")
 
 
 def fail(msg):
@@ -671,6 +671,46 @@ def cloth(results, outdir, formats):
     return out, save(fig, outdir, "cloth", formats)
 
 
+# ---------------------------------------------------------------------------- thin-obstacles
+
+def thin_obstacles(results, outdir, formats):
+    """Static misses (balls through thin scenery polygons) against dt, and the polygon tests
+    the kinematic principle saved (`@fixed:kinematic=1` methods)."""
+    res = results[0]
+    ds = dts(res)
+    out = [f"### thin-obstacles: {plot.title(res)}", "",
+           "missed body-static events per method (columns: dt, s)", "",
+           "| method | conservative | " + " | ".join(fmt_dt(d) for d in ds) + " |",
+           "|---|---|" + "---|" * len(ds)]
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    saved_rows = []
+    for i, (name, rs) in enumerate(plot.by_method(res["records"]).items()):
+        cont = rs[0]["continuous"]
+        ax.plot([r["dt"] for r in rs], [r["static_missed"] for r in rs], label=name, linewidth=1.3, markersize=4,
+                linestyle="-" if cont else "--", **plot.style(i))
+        row = {r["dt"]: r["static_missed"] for r in rs}
+        out.append(f"| {name} | {'yes' if rs[0]['conservative'] and cont else 'no'} | "
+                   + " | ".join(str(row.get(d, "")) for d in ds) + " |")
+        if any(r["static_tests_saved"] for r in rs) or "kinematic=1" in name:
+            saved = {r["dt"]: (r["static_tests_saved"], r["static_bound_candidates"]) for r in rs}
+            saved_rows.append(f"| {name} | " + " | ".join(
+                f"{saved[d][0]} / {saved[d][1]}" if d in saved else "" for d in ds) + " |")
+    ax.set_xscale("log")
+    ax.set_yscale("symlog", linthresh=1)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("timestep dt (s)")
+    ax.set_ylabel("missed body-static events")
+    ax.set_title(f"thin-obstacles: {res['records'][0]['static_events']} body-static events; dashed: discrete",
+                 fontsize=10)
+    ax.grid(True, which="both", alpha=0.3)
+    legend(ax, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    if saved_rows:
+        out += ["", "kinematic principle: static tests saved / static pairs passed by the bound (columns: dt, s)", "",
+                "| method | " + " | ".join(fmt_dt(d) for d in ds) + " |", "|---|" + "---|" * len(ds)] + saved_rows
+    out += ["", self_check_line(results)]
+    return out, save(fig, outdir, "thin-obstacles-missed", formats)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
@@ -724,6 +764,8 @@ def main(argv=None):
         lines, paths = tunnelling(results, outdir, formats, "spinning")
     elif s == "fit":
         lines, paths = fit(results, outdir, formats)
+    elif s == "thin-obstacles":
+        lines, paths = thin_obstacles(results, outdir, formats)
     else:
         lines, paths = time_against(results, outdir, formats, "scaling", lambda r: r["scene"]["bodies"],
                                     "bodies N", "broad-phase time against N")

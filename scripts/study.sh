@@ -14,7 +14,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 ccdlab=${CCDLAB:-$root/build/ccdlab}
 python=/usr/bin/python3
-studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling spinning fit cloth spin-model"
+studies="tunnelling sap-coherence equal-endpoints grazing precision bound-violation mixed-sizes scaling scheduling spinning fit cloth spin-model thin-obstacles"
 
 usage() {
   echo "usage: scripts/study.sh NAME [--threads N] [--plot-only] [--publish]   (NAME: ${studies// /, })" >&2

@@ -10,6 +10,10 @@ constexpr ParameterSpec kFixedParameters[] = {
     {"narrow_from_earliest", 0.0,
      "1: the narrow phase starts at the bound test's earliest possible contact instead of the step start",
      ParameterKind::Integer, {0.0, 1.0}},
+    {"kinematic", 0.0,
+     "1: the kinematic principle against the scenery: each body's static pairs are solved in order of their earliest "
+     "possible contact, skipping those beyond its first certain contact in the step (counted as static_tests_saved)",
+     ParameterKind::Integer, {0.0, 1.0}},
 };
 constexpr ParameterSpec kEarliestParameters[] = {
     {"stale", 0.25,

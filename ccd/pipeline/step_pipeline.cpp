@@ -1,3 +1,4 @@
+#include <ccd/narrow/sphere_polygon_narrow.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
 #include <algorithm>
@@ -38,6 +39,11 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
 void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
                        std::span<const std::size_t> start_piece, const RigidMotion* rigid) {
   if (motion.periodic()) {
+    out.static_candidates.clear();
+    out.static_passed.clear();
+    out.static_earliest.clear();
+    out.static_contacts.clear();
+    out.static_tests_saved = 0;
     run_periodic(ctx, motion, out, times);
     return;
   }
@@ -78,11 +84,68 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   }
   watch.stop(local.narrow);
 
+  in.t0 = ctx.t0;
+  run_static(ctx, in, out, local, times != nullptr);
+
   if (times) {
     times->bound += local.bound;
     times->broad += local.broad;
     times->narrow += local.narrow;
   }
+}
+
+void StepPipeline::set_scenery(std::span<const StaticPolygon> polygons) {
+  scenery_ = polygons;
+  static_index_ = StaticIndex::from_polygons(polygons);
+}
+
+void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local,
+                              bool timed) {
+  out.static_candidates.clear();
+  out.static_passed.clear();
+  out.static_earliest.clear();
+  out.static_contacts.clear();
+  out.static_tests_saved = 0;
+  if (scenery_.empty()) return;
+  Stopwatch watch(timed);
+  const std::size_t n = ctx.start.size();
+
+  watch.start();
+  static_index_.find_pairs(std::span<const Aabb>(boxes_.data(), std::min(n, boxes_.size())), out.static_candidates);
+  watch.stop(local.broad);
+
+  watch.start();
+  for (const StaticPair& p : out.static_candidates) {
+    const PairTest t = bound_->test_static(p.body, boxes_[p.body], scenery_[p.polygon], static_index_.box(p.polygon));
+    if (t.possible()) {
+      out.static_passed.push_back(p);
+      out.static_earliest.push_back(t.earliest);
+    }
+  }
+  watch.stop(local.bound);
+
+  watch.start();
+  auto solve = [&](std::uint32_t body, std::uint32_t polygon) {
+    return sphere_polygon_narrow(in, body, scenery_[polygon]);
+  };
+  if (!options_.kinematic) {
+    for (const StaticPair& p : out.static_passed) {
+      const ContactResult c = solve(p.body, p.polygon);
+      if (c.found()) out.static_contacts.push_back({p, c});
+    }
+  } else {
+    // static_passed is sorted by body (the index's order, filtered): one group per body.
+    for (std::size_t i = 0; i < out.static_passed.size();) {
+      const std::uint32_t body = out.static_passed[i].body;
+      body_candidates_.clear();
+      for (; i < out.static_passed.size() && out.static_passed[i].body == body; ++i)
+        body_candidates_.push_back({out.static_passed[i].polygon, out.static_earliest[i]});
+      out.static_tests_saved += kinematic_visit(
+          std::span<StaticCandidate>(body_candidates_), [&](std::uint32_t polygon) { return solve(body, polygon); },
+          [&](std::uint32_t polygon, const ContactResult& c) { out.static_contacts.push_back({{body, polygon}, c}); });
+    }
+  }
+  watch.stop(local.narrow);
 }
 
 void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out,

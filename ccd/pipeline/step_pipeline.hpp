@@ -17,6 +17,17 @@
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
 //     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
+// Scenery (set_scenery: the scene's static polygons, indexed once in a StaticIndex,
+// ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
+//  5. static_index.find_pairs(boxes) -> `static_candidates` (body, polygon), by body;
+//  6. bound.test_static for each -> `static_passed` with `static_earliest`;
+//  7. the exact sphere-polygon narrow phase (ccd/narrow/sphere_polygon_narrow.hpp) for each
+//     passed pair -> `static_contacts`. With PipelineOptions::kinematic the passed pairs of
+//     each body are visited by kinematic_visit (ccd/pipeline/kinematic_order.hpp): in order
+//     of `earliest`, skipping those that cannot be touched before the body's first certain
+//     contact; `static_tests_saved` counts the skipped ones. The stages' times add to the
+//     broad, bound and narrow times. Rigid bodies meet the scenery as their enclosing
+//     spheres (conservative, not exact). Periodic scenes run no static stages.
 // Periodic scenes (`motion.periodic()`): the same stages over the bodies and their images
 // (ccd/pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
 // image), each candidate image pair tested and solved with its shift, and reported as the
@@ -32,7 +43,10 @@
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/narrow_table.hpp>
+#include <ccd/pipeline/kinematic_order.hpp>
+#include <ccd/broad_phase/static_index.hpp>
 #include <ccd/pipeline/periodic_images.hpp>
+#include <ccd/scene/scenery.hpp>
 
 #include <memory>
 #include <vector>
@@ -51,18 +65,33 @@ struct PairContact {
   ContactResult contact;
 };
 
+/// A body's contact with a static polygon found by the narrow phase.
+struct StaticContact {
+  StaticPair pair;
+  ContactResult contact;
+};
+
 struct StepResult {
   std::vector<BodyPair> candidates;   ///< broad-phase pairs
   std::vector<BodyPair> passed;       ///< of those, pairs the bound's test let through
   std::vector<double> earliest;       ///< per passed pair, the test's earliest possible contact
   std::vector<PairContact> contacts;  ///< of those, pairs the narrow phase found in contact
   BroadPhaseStats broad_stats;        ///< the broad phase's stats for this step
+  // Scenery (empty without it):
+  std::vector<StaticPair> static_candidates;   ///< the static index's (body, polygon) pairs
+  std::vector<StaticPair> static_passed;       ///< of those, pairs the bound's test_static let through
+  std::vector<double> static_earliest;         ///< per passed pair, its earliest possible contact
+  std::vector<StaticContact> static_contacts;  ///< of those, pairs the narrow phase found in contact
+  std::uint64_t static_tests_saved = 0;        ///< passed pairs the kinematic principle skipped
 };
 
 struct PipelineOptions {
   /// false: the narrow phase of every passed pair starts at the step start t0 (default);
   /// true: at the pair test's `earliest` (continuous methods only; a sample test ignores it).
   bool narrow_from_earliest = false;
+  /// true: the kinematic principle on the static pairs (ccd/pipeline/kinematic_order.hpp);
+  /// false: every passed static pair is solved.
+  bool kinematic = false;
 };
 
 class StepPipeline {
@@ -77,6 +106,11 @@ class StepPipeline {
   /// `rigid`: the shapes and spin of a scene with non-sphere bodies (null: spheres only).
   void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
            std::span<const std::size_t> start_piece = {}, const RigidMotion* rigid = nullptr);
+
+  /// The scenery the steps test the bodies against: indexed once here (the index keeps
+  /// the polygons' boxes; the polygons must outlive the pipeline). Empty: no static stages.
+  void set_scenery(std::span<const StaticPolygon> polygons);
+  const StaticIndex& static_index() const { return static_index_; }
 
   bool sample_test() const { return knowledge_ == Knowledge::Instant; }
   const Bound& bound() const { return *bound_; }
@@ -103,6 +137,11 @@ class StepPipeline {
   const NarrowTable* table_;
   NarrowEntry narrow_;
   std::vector<Aabb> boxes_;
+  // Scenery.
+  void run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local, bool timed);
+  std::span<const StaticPolygon> scenery_;
+  StaticIndex static_index_;
+  std::vector<StaticCandidate> body_candidates_;
 };
 
 }  // namespace ccd

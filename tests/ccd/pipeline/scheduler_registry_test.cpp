@@ -9,6 +9,9 @@ TEST_CASE("parse_scheduler resolves names and options", "[pipeline][scheduler][r
   const ccd::SchedulerSpec fixed = ccd::parse_scheduler("fixed");
   CHECK_FALSE(fixed.earliest());
   CHECK(fixed.options.integer("narrow_from_earliest") == 0);
+  CHECK(fixed.options.integer("kinematic") == 0);  // the kinematic principle is opt-in
+  CHECK(ccd::parse_scheduler("fixed:kinematic=1").options.integer("kinematic") == 1);
+  CHECK_THROWS_AS(ccd::parse_scheduler("fixed:kinematic=2"), std::invalid_argument);
   CHECK(ccd::default_scheduler().info == fixed.info);
   const ccd::SchedulerSpec e = ccd::parse_scheduler("earliest");
   CHECK(e.earliest());
