@@ -116,6 +116,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   const std::uint32_t pair_ids[2] = {0, 1};
   if (wrapped) {
     images.begin(motion);
+    boxes.resize(n);
     if (ctx.walls) {  // the slots' paths are unwrapped: no walls on a wrapped axis
       constexpr double kInf = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < 3; ++k)
@@ -294,7 +295,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     build_slots(batch, t);
     image_slots.clear();
     freed.clear();
-    for (const std::uint32_t i : batch) images.set_images(i, boxes[i], boxes, image_slots, freed);
+    for (const std::uint32_t i : batch) {
+      const Aabb home = boxes[i];  // a copy: set_images may grow `boxes`
+      images.set_images(i, home, boxes, image_slots, freed);
+    }
     states.resize(images.size());
     for (const std::uint32_t s : image_slots) state_at(s, t);
     build_slots(image_slots, t);
