@@ -36,7 +36,9 @@ void SchedulerImages::begin(const Trajectories& motion) {
   step_ = 0x1p-12 * extent;
 }
 
-ImageShift SchedulerImages::relative(std::uint32_t x, std::uint32_t y) const { return minus(shift_[y], shift_[x]); }
+ImageShift SchedulerImages::relative(std::uint32_t x, std::uint32_t y) const {
+  return minus(shift_[y], shift_[x]);
+}
 
 void SchedulerImages::set_home(std::uint32_t body, double t) {
   const std::size_t j = motion_->piece_index(body, t);
@@ -104,7 +106,8 @@ void SchedulerImages::set_images(std::uint32_t body, const Aabb& home_box, std::
   mine.resize(used);
 }
 
-void SchedulerImages::keep_clear(const Aabb& active, std::vector<Aabb>& boxes, std::vector<std::uint32_t>& moved) {
+void SchedulerImages::keep_clear(const Aabb& active, std::vector<Aabb>& boxes,
+                                 std::vector<std::uint32_t>& moved) {
   // Pooled points lie at x <= park_.x: a box starting above it on x meets none of them.
   if (active.lo.x() > park_.x()) return;
   const double margin = 2.0 * ((active.hi - active.lo).maxCoeff() + (box_.max - box_.min).maxCoeff());
@@ -135,8 +138,10 @@ const Trajectories& SchedulerImages::view(std::span<const std::uint32_t> slots, 
   for (const std::uint32_t s : slots) listed_[s] = 1;
   view_.reset(motion_->horizon(), std::nullopt);
   for (std::uint32_t s = 0; s < owner_.size(); ++s) {
-    if (listed_[s]) append_path(view_, s, u0, u1);
-    else view_.append_body(0.0, {}, {}, {});
+    if (listed_[s])
+      append_path(view_, s, u0, u1);
+    else
+      view_.append_body(0.0, {}, {}, {});
   }
   return view_;
 }

@@ -61,7 +61,8 @@ TEST_CASE("scheduler slots: homes, unwrapped paths and exact images", "[pipeline
 
   SECTION("images of the home box that meets the face, exact shifts, pooled slots") {
     im.set_home(0, 0.25);
-    std::vector<ccd::Aabb> boxes = {swept(Vec3(0.5, 4, 4), Vec3(-0.5, 4, 4), 0.5), swept(Vec3(4, 4, 4), Vec3(4, 4, 4), 0.5)};
+    std::vector<ccd::Aabb> boxes = {swept(Vec3(0.5, 4, 4), Vec3(-0.5, 4, 4), 0.5),
+                                    swept(Vec3(4, 4, 4), Vec3(4, 4, 4), 0.5)};
     std::vector<std::uint32_t> images, freed;
     im.set_images(0, boxes[0], boxes, images, freed);
     REQUIRE(images.size() == 1);  // one image, at +8 on x
@@ -109,7 +110,8 @@ TEST_CASE("scheduler slots: homes, unwrapped paths and exact images", "[pipeline
   }
 
   SECTION("a box that reaches the parking area moves the pool out") {
-    std::vector<ccd::Aabb> boxes = {swept(Vec3(0.5, 4, 4), Vec3(-0.5, 4, 4), 0.5), swept(Vec3(4, 4, 4), Vec3(4, 4, 4), 0.5)};
+    std::vector<ccd::Aabb> boxes = {swept(Vec3(0.5, 4, 4), Vec3(-0.5, 4, 4), 0.5),
+                                    swept(Vec3(4, 4, 4), Vec3(4, 4, 4), 0.5)};
     std::vector<std::uint32_t> images, freed, moved;
     im.set_home(0, 0.25);
     im.set_images(0, boxes[0], boxes, images, freed);
