@@ -46,14 +46,14 @@ ccd::Scene read_experiment_scene(const Experiment& e, const std::string& file) {
 
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
   ccd::Scene scene = read_experiment_scene(e, file);
-  // The earliest-contact scheduler refreshes bodies one by one over windows of their own;
-  // it has no image layer (ccd/pipeline/periodic_images.hpp), so it refuses wrapped scenes.
-  if (scene.wraps())
+  // The earliest-contact scheduler's images (ccd/pipeline/scheduler_images.hpp) carry
+  // sphere paths only: in a wrapped scene it refuses shaped bodies.
+  if (scene.wraps() && scene.has_non_spheres())
     for (std::size_t i = 0; i < e.methods.size(); ++i)
       if (parse_method(e.methods[i]).scheduled())
         throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
-                              "@earliest does not support a scene that wraps around (box.boundary \"wrap\"); "
-                              "use the fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
+                              "@earliest takes plain spheres only in a scene that wraps around (box.boundary "
+                              "\"wrap\"); use the fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
   return scene;
 }
 

@@ -2,6 +2,7 @@
 
 #include <bounds/speed_earliest.hpp>
 #include <ccd/motion/rigid_motion.hpp>
+#include <ccd/pipeline/scheduler_images.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <limits>
 #include <queue>
 #include <stdexcept>
+#include <tuple>
 
 namespace ccd {
 namespace {
@@ -23,8 +25,9 @@ enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
 struct Event {
   double t;
   Kind kind;
-  std::uint32_t a, b;    // a pair (a < b), or the expiring body in a (b == a)
-  std::uint32_t va, vb;  // the bodies' versions when the event was queued
+  std::uint32_t a, b;    // a pair (a < b; in a wrapped scene two slots, a's owner < b's), or the
+                         // expiring body in a (b == a)
+  std::uint64_t va, vb;  // the bodies' version stamps when the event was queued
   double since;          // a check: when the bounds it came from start
 };
 
@@ -78,9 +81,10 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
 bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
                             const std::optional<WallBox>& walls, std::vector<ScheduledContact>& contacts,
                             StepTimes* times, const std::atomic<bool>* cancel) {
-  // No image layer here (docs/periodic.md): a scene that wraps around is refused.
-  if (motion.periodic())
-    throw std::invalid_argument("the earliest scheduler does not support a scene that wraps around (box.boundary)");
+  // A wrapped scene: bodies and their images as slots (ccd/pipeline/scheduler_images.hpp).
+  const bool wrapped = motion.periodic() != nullptr;
+  if (wrapped && options_.rigid)
+    throw std::invalid_argument("the earliest scheduler takes plain spheres only in a scene that wraps around");
   stats_ = {};
   contacts.clear();
   const std::size_t n = motion.size();
@@ -91,8 +95,11 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   StepTimes local;
   Watch watch{times != nullptr};
 
-  std::vector<BodyState> states(n);
-  std::vector<std::uint32_t> version(n, 0);
+  std::vector<BodyState> states(n);  // per body (per slot in a wrapped scene)
+  // Versions are stamps unique over all bodies and refreshes: a queued event is current while
+  // its bodies' stamps are (a slot given to another body then never matches either).
+  std::vector<std::uint64_t> version(n, 0);
+  std::uint64_t stamp = 0;
   std::vector<Aabb> boxes, scratch_boxes(n);  // the scratch instance holds refined pairs only
   std::uint32_t pair_bodies[2];
   std::vector<BodyPair> pairs;
@@ -104,12 +111,67 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   ctx.walls = walls;
   ctx.exact = knowledge_ == Knowledge::Exact ? &motion : nullptr;
   ctx.rigid = options_.rigid;
+  SchedulerImages images;
+  std::vector<BodyState> pair_states(2);
+  const std::uint32_t pair_ids[2] = {0, 1};
+  if (wrapped) {
+    images.begin(motion);
+    boxes.resize(n);
+    if (ctx.walls) {  // the slots' paths are unwrapped: no walls on a wrapped axis
+      constexpr double kInf = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < 3; ++k)
+        if (motion.periodic()->wrap[k]) {
+          ctx.walls->min[static_cast<int>(k)] = -kInf;
+          ctx.walls->max[static_cast<int>(k)] = kInf;
+          ctx.walls->boundary[k] = Boundary::Reflect;
+        }
+    }
+  }
+  const auto owner = [&](std::uint32_t x) { return wrapped ? images.owner(x) : x; };
 
   const auto state_at = [&](std::uint32_t i, double t) {
-    states[i] = {motion.position(i, t), motion.velocity(i, t), motion.radius(i)};
+    states[i] = wrapped ? images.state(i, t) : BodyState{motion.position(i, t), motion.velocity(i, t), motion.radius(i)};
+  };
+  // Wrapped scenes: the reported slot pairs as image pairs (a < b, relative shift), each once.
+  struct ImagePair {
+    std::uint32_t a, b;  // bodies
+    ImageShift shift;    // of y's image against x's
+    std::uint32_t x, y;  // slots (owners a and b)
+  };
+  std::vector<ImagePair> image_pairs;
+  const auto image_pairs_of = [&] {
+    image_pairs.clear();
+    for (const BodyPair& p : pairs) {
+      std::uint32_t x = p.a, y = p.b;
+      std::uint32_t a = images.owner(x), b = images.owner(y);
+      if (a == SchedulerImages::kFree || b == SchedulerImages::kFree || a == b) continue;
+      if (a > b) {
+        std::swap(a, b);
+        std::swap(x, y);
+      }
+      image_pairs.push_back({a, b, images.relative(x, y), x, y});
+    }
+    const auto key = [](const ImagePair& q) { return std::tie(q.a, q.b, q.shift); };
+    std::sort(image_pairs.begin(), image_pairs.end(), [&](const ImagePair& p, const ImagePair& q) {
+      return key(p) != key(q) ? key(p) < key(q) : std::tie(p.x, p.y) < std::tie(q.x, q.y);
+    });
+    image_pairs.erase(std::unique(image_pairs.begin(), image_pairs.end(),
+                                  [&](const ImagePair& p, const ImagePair& q) { return key(p) == key(q); }),
+                      image_pairs.end());
   };
   // Tests the reported pairs and queues a check for each that may touch (not before now).
   const auto test_pairs = [&](double now) {
+    if (wrapped) {
+      for (const ImagePair& q : image_pairs) {
+        ++stats_.pair_checks;
+        const PairTest r = bound_->test(std::min(q.x, q.y), std::max(q.x, q.y));
+        if (!r.possible()) continue;
+        ++stats_.passed;
+        const double since = std::max(bound_->window(q.x).t0, bound_->window(q.y).t0);
+        queue.push({std::max(r.earliest, now), Kind::Check, q.x, q.y, version[q.a], version[q.b], since});
+      }
+      return;
+    }
     for (const BodyPair& p : pairs) {
       ++stats_.pair_checks;
       const PairTest r = bound_->test(p.a, p.b);
@@ -125,7 +187,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   // A bound on body i's speed over [t, t1] (state at t set), as the bound's knowledge
   // allows: the exact pieces' largest speed, or |v(t)| + A (t1 - t) (walls keep the speed).
   const auto speed_bound = [&](std::uint32_t i, double t, double t1) {
-    if (knowledge_ == Knowledge::Exact) return max_speed(motion, i, t, t1);
+    if (knowledge_ == Knowledge::Exact) return max_speed(motion, owner(i), t, t1);
     constexpr double eps = std::numeric_limits<double>::epsilon();
     return (states[i].velocity.norm() + acceleration_bound * (t1 - t)) * (1.0 + 8.0 * eps);
   };
@@ -188,7 +250,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     build_windows(t);
     watch.stop(local.bound);
     for (const std::uint32_t i : batch) {
-      ++version[i];
+      version[i] = ++stamp;
       queue_expiry(i, ends[i]);
     }
     watch.start();
@@ -200,8 +262,78 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     watch.stop(local.bound);
   };
 
+  // Wrapped scenes: refreshes the bodies of `batch` at time t: their home slots, then their
+  // images (from the homes' boxes), one Bound::refresh per distinct window end each; the
+  // broad phase updates the homes, the images and the slots given back to the pool (or, the
+  // first time, finds all pairs).
+  std::vector<std::uint32_t> image_slots, freed, moved;
+  const auto build_slots = [&](const std::vector<std::uint32_t>& slots, double t) {
+    ctx.t0 = t;
+    for (std::size_t b = 0; b < slots.size();) {  // slots sorted by their owners' window ends
+      const double end = ends[images.owner(slots[b])];
+      std::size_t e = b + 1;
+      while (e < slots.size() && ends[images.owner(slots[e])] == end) ++e;
+      group.assign(slots.begin() + static_cast<std::ptrdiff_t>(b), slots.begin() + static_cast<std::ptrdiff_t>(e));
+      ctx.t1 = end;
+      const Trajectories& view = images.view(group, t, end);
+      ctx.exact = knowledge_ == Knowledge::Exact ? &view : nullptr;
+      ctx.start = states;
+      bound_->refresh(ctx, group, boxes);
+      b = e;
+    }
+  };
+  const auto refresh_wrapped = [&](double t, bool first) {
+    ++stats_.batches;
+    watch.start();
+    for (const std::uint32_t i : batch) {
+      images.set_home(i, t);
+      state_at(i, t);
+      ends[i] = window_end(i, t);
+    }
+    std::sort(batch.begin(), batch.end(),
+              [&](std::uint32_t x, std::uint32_t y) { return ends[x] != ends[y] ? ends[x] < ends[y] : x < y; });
+    build_slots(batch, t);
+    image_slots.clear();
+    freed.clear();
+    for (const std::uint32_t i : batch) {
+      const Aabb home = boxes[i];  // a copy: set_images may grow `boxes`
+      images.set_images(i, home, boxes, image_slots, freed);
+    }
+    states.resize(images.size());
+    for (const std::uint32_t s : image_slots) state_at(s, t);
+    build_slots(image_slots, t);
+    stats_.refreshes += batch.size() + image_slots.size();
+    watch.stop(local.bound);
+    for (const std::uint32_t i : batch) {
+      version[i] = ++stamp;
+      queue_expiry(i, ends[i]);
+    }
+    watch.start();
+    moved.assign(batch.begin(), batch.end());
+    moved.insert(moved.end(), image_slots.begin(), image_slots.end());
+    moved.insert(moved.end(), freed.begin(), freed.end());
+    const std::size_t active = batch.size() + image_slots.size();
+    for (std::size_t k = 0; k < active; ++k) images.keep_clear(boxes[moved[k]], boxes, moved);
+    if (moved.size() > active + freed.size()) {  // pooled slots re-parked: each once
+      std::sort(moved.begin(), moved.end());
+      moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+    }
+    if (first) broad_->find_pairs(boxes, pairs);
+    else broad_->update(boxes, moved, pairs);
+    watch.stop(local.broad);
+    watch.start();
+    image_pairs_of();
+    stats_.candidates += image_pairs.size();
+    test_pairs(t);
+    watch.stop(local.bound);
+  };
+
   // Every body's first window [0, min(dt, T)].
-  {
+  if (wrapped) {
+    batch.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) batch[i] = i;
+    refresh_wrapped(0.0, true);
+  } else {
     watch.start();
     for (std::uint32_t i = 0; i < n; ++i) state_at(i, 0.0);
     ctx.t0 = 0.0;
@@ -229,6 +361,19 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     for (std::uint32_t i = 0; i < n; ++i) queue_expiry(i, ends[i]);
   }
 
+  // The narrow phase of a check's pair (wrapped: the two slots' paths) over [from, until].
+  const auto narrow_pair = [&](std::uint32_t x, std::uint32_t y, double from, double until) {
+    const RigidMotion* rigid = options_.rigid;
+    if (wrapped) {
+      pair_states[0] = states[x];
+      pair_states[1] = states[y];
+      const NarrowInput in{&images.pair_view(x, y, from, until), pair_states, {}, from, until, false, nullptr};
+      return narrow_(in, 0, 1);
+    }
+    const NarrowInput in{&motion, states, {}, from, until, false, rigid};
+    return rigid ? table_->find(rigid->kind(x), rigid->kind(y))(in, x, y) : narrow_(in, x, y);
+  };
+
   bool finished = true;
   std::uint64_t popped = 0;
   while (!queue.empty()) {
@@ -246,10 +391,13 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
         queue.pop();
         if (version[x.a] == x.va) batch.push_back(x.a);
       }
-      refresh(e.t);
+      if (wrapped) refresh_wrapped(e.t, false);
+      else refresh(e.t);
       continue;
     }
-    if (version[e.a] != e.va || version[e.b] != e.vb) continue;  // queued from an older bound
+    const std::uint32_t oa = owner(e.a), ob = owner(e.b);  // bodies (e.a, e.b: slots when wrapped)
+    if (oa == SchedulerImages::kFree || ob == SchedulerImages::kFree || version[oa] != e.va || version[ob] != e.vb)
+      continue;  // queued from an older bound
     const Window wa = bound_->window(e.a);
     const Window wb = bound_->window(e.b);
     const double to = std::min(wa.t1, wb.t1);
@@ -278,40 +426,52 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       }
       const double until = from + h < to ? from + h : to;
       ++stats_.narrow_calls;
-      const RigidMotion* rigid = options_.rigid;
-      const NarrowInput in{&motion, states, {}, from, until, false, rigid};
       watch.start();
-      const ContactResult c =
-          rigid ? table_->find(rigid->kind(e.a), rigid->kind(e.b))(in, e.a, e.b) : narrow_(in, e.a, e.b);
+      const ContactResult c = narrow_pair(e.a, e.b, from, until);
       watch.stop(local.narrow);
       // A contact ends the pair's window as a narrow call over [from, to] would have: its
       // first contact there is this one.
-      if (c.found()) contacts.push_back({{e.a, e.b}, c, from, to});
+      if (c.found()) contacts.push_back({{oa, ob}, c, from, to});
       else if (until < to) queue.push({until, Kind::Check, e.a, e.b, e.va, e.vb, e.since});
       continue;
     }
     if (options_.refresh_bodies) {
       batch.clear();
-      if (refine && e.t - wa.t0 > stale_age) batch.push_back(e.a);
-      if (refine && e.t - wb.t0 > stale_age) batch.push_back(e.b);
+      if (refine && e.t - wa.t0 > stale_age) batch.push_back(oa);
+      if (refine && e.t - wb.t0 > stale_age) batch.push_back(ob);
       if (!batch.empty()) {
-        refresh(e.t);
+        if (wrapped) refresh_wrapped(e.t, false);
+        else refresh(e.t);
         continue;
       }
     } else if (refine && e.t - e.since > stale_age) {
       // The pair's own bounds from now to the end of the common window.
       watch.start();
-      pair_bodies[0] = e.a;
-      pair_bodies[1] = e.b;
       state_at(e.a, e.t);
       state_at(e.b, e.t);
-      ctx.t0 = e.t;
-      ctx.t1 = to;
-      ctx.start = states;
-      scratch_->refresh(ctx, pair_bodies, scratch_boxes);
+      PairTest r;
+      if (wrapped) {  // the two slots' paths as bodies 0 and 1 of the scratch instance
+        pair_states[0] = states[e.a];
+        pair_states[1] = states[e.b];
+        const Trajectories& pv = images.pair_view(e.a, e.b, e.t, to);
+        StepContext pc = ctx;
+        pc.t0 = e.t;
+        pc.t1 = to;
+        pc.start = pair_states;
+        pc.exact = knowledge_ == Knowledge::Exact ? &pv : nullptr;
+        scratch_->refresh(pc, pair_ids, scratch_boxes);
+        r = scratch_->test(0, 1);
+      } else {
+        pair_bodies[0] = e.a;
+        pair_bodies[1] = e.b;
+        ctx.t0 = e.t;
+        ctx.t1 = to;
+        ctx.start = states;
+        scratch_->refresh(ctx, pair_bodies, scratch_boxes);
+        r = scratch_->test(e.a, e.b);
+      }
       stats_.refreshes += 2;
       ++stats_.pair_checks;
-      const PairTest r = scratch_->test(e.a, e.b);
       watch.stop(local.bound);
       if (r.possible()) {
         ++stats_.passed;
@@ -320,13 +480,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       continue;
     }
     ++stats_.narrow_calls;
-    const RigidMotion* rigid = options_.rigid;
-    const NarrowInput in{&motion, states, {}, e.t, to, false, rigid};
     watch.start();
-    const ContactResult c =
-        rigid ? table_->find(rigid->kind(e.a), rigid->kind(e.b))(in, e.a, e.b) : narrow_(in, e.a, e.b);
+    const ContactResult c = narrow_pair(e.a, e.b, e.t, to);
     watch.stop(local.narrow);
-    if (c.found()) contacts.push_back({{e.a, e.b}, c, e.t, to});
+    if (c.found()) contacts.push_back({{oa, ob}, c, e.t, to});
   }
   if (times) {
     times->bound += local.bound;

@@ -44,6 +44,17 @@
 // Contacts are reported with the narrow call's interval [from, to]: the runner credits
 // the events of the pair that start in it (as a fixed step credits the events that start
 // in the step).
+// Scenes that wrap around (motion.periodic(), docs/periodic.md): the bound and the broad
+// phase work on slots (ccd/pipeline/scheduler_images.hpp): body i's home slot i (its path
+// unwrapped over its window) and one slot per image of the home's box that meets the cell,
+// built at every refresh of the body (the homes' bounds first, then the images'); slots of
+// images that no longer meet the cell return to a pool, their boxes parked where they meet
+// nothing. A slot pair reported by the broad phase is the image pair (a, b, relative
+// shift); pairs of one body's own slots are dropped and each image pair is tested once per
+// refresh. Checks are queued per slot pair; the narrow phase and a pair's own bounds run on
+// the two slots' paths (the shift built in), and a contact is reported for the bodies. A
+// slot changes hands only when its body refreshes, which makes its queued checks stale, so
+// coverage is as above for every image pair. `refreshes` counts image bounds too.
 #include <bounds/bound.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/narrow/narrow_table.hpp>
@@ -118,8 +129,8 @@ class EarliestScheduler {
 
   /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
   /// order the checks ran. Adds stage times to `*times` when given. Stops early (returns
-  /// false) when `*cancel` becomes true. Throws std::invalid_argument for a scene that
-  /// wraps around (motion.periodic(): no image layer, docs/periodic.md).
+  /// false) when `*cancel` becomes true. A scene that wraps around (motion.periodic()) takes
+  /// plain spheres only (std::invalid_argument with `options.rigid`).
   bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
            std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr,
            const std::atomic<bool>* cancel = nullptr);

@@ -27,6 +27,11 @@
 
 namespace ccd {
 
+/// Periods a body jumped by (per wrapped axis) from piece `prev` to the next piece `next`:
+/// the end of prev and the start of next differ by a whole number of periods (0 at breaks
+/// other than a wrap).
+ImageShift wrap_jump(const PeriodicBox& box, const Piece& prev, const Piece& next);
+
 class PeriodicImages {
  public:
   /// Builds the n unwrapped bodies of the step ctx.t0..ctx.t1 of `motion` (periodic).

@@ -6,7 +6,6 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
-#include <ccd/pipeline/earliest_scheduler.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/truth/contact_function.hpp>
 #include <ccd/truth/pair_contact.hpp>
@@ -85,16 +84,4 @@ TEST_CASE("the step pipeline on a wrapped scene equals brute force and the perio
   CHECK(images > 0);
   CHECK(touching_total >= 10);
   CHECK(across_seam >= 1);  // the scene tests the seam
-}
-
-TEST_CASE("the earliest scheduler refuses a scene that wraps around", "[pipeline][periodic]") {
-  const ccd::Scene scene = ccdlab::generate_scene("gas", nlohmann::json{{"bodies", 10}, {"wrap", 1}});
-  const ccd::Trajectories motion(scene);
-  const ccd::BoundSpec capsule = ccd::parse_bound("capsule");
-  ccd::ScheduleOptions options;
-  options.window = 0.1;
-  ccd::EarliestScheduler scheduler(capsule.make(), capsule.make(), capsule.info->knowledge,
-                                   ccd::find_broad_phase("sap").make(), options);
-  std::vector<ccd::ScheduledContact> contacts;
-  CHECK_THROWS_AS(scheduler.run(motion, scene.horizon, 0.0, scene.box, contacts), std::invalid_argument);
 }
