@@ -7,10 +7,12 @@
 // through a thin plate), with step boundaries on the contact instants; and balls falling
 // through a stack of thin plates. A scene without scenery has every static field 0.
 #include "../../experiments/method.hpp"
+#include "../../experiments/run_experiment.hpp"
 #include "../../experiments/runner.hpp"
 #include "../ccd/scene/scenery_support.hpp"
 
 #include <bounds/registry.hpp>
+#include <ccd/scene/input_error.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 
@@ -142,4 +144,20 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
   const nlohmann::json j = ccdlab::to_json(r);
   CHECK(j["static_events"] == 0);
   CHECK(j["static_missed"] == 0);
+}
+
+TEST_CASE("@earliest refuses a scene with scenery, naming the method", "[runner][scenery]") {
+  ccdlab::Experiment e;
+  e.scene_generator = {{"generator", "floor_ramp"}, {"bodies", 4}};
+  e.methods = {"capsule/grid", "capsule/grid@earliest"};
+  try {
+    ccdlab::load_experiment_scene(e, "e.json");
+    FAIL("an @earliest method on a scene with scenery was accepted");
+  } catch (const ccd::InputError& err) {
+    CHECK(err.file() == "e.json");
+    CHECK(err.field() == "methods[1]");
+    CHECK(std::string(err.what()).find("capsule/grid") != std::string::npos);
+  }
+  e.methods = {"capsule/grid"};
+  CHECK_FALSE(ccdlab::load_experiment_scene(e, "e.json").scenery.empty());
 }
