@@ -56,11 +56,14 @@ TEST_CASE("every method keeps its guarantee on the dyadic rigid seam cases", "[r
 
 TEST_CASE("every method keeps its guarantee on random wrapped rigid scenes", "[runner][methods][periodic][rigid]") {
 #ifdef CCDLAB_SANITIZED
-  const int bodies = 16;
+  const int bodies = 12;
+  const std::uint64_t seed = 2;  // 7 events (seed 5 draws 1 at this size)
 #else
   const int bodies = 32;
+  const std::uint64_t seed = 5;
 #endif
-  check_every_method(ccd::test::random_rigid_periodic_scene(5, bodies), 0.0625, "random wrapped rigid scene");
+  check_every_method(ccd::test::random_rigid_periodic_scene(seed, static_cast<std::size_t>(bodies)), 0.0625,
+                     "random wrapped rigid scene");
   const ccd::Scene sticks = ccdlab::generate_scene(
       "sticks", {{"bodies", bodies}, {"seed", 3}, {"speed_max", 8}, {"spin_max", 12}, {"fraction", 0.2},
                  {"horizon", 0.5}, {"wrap", 1}});
