@@ -25,6 +25,21 @@ RigidMotion::RigidMotion(const Scene& scene, const Trajectories& centres)
   }
 }
 
+void RigidMotion::assign_images(const RigidMotion& source, const Trajectories& centres,
+                                std::span<const std::uint32_t> owner, double t0, double t1) {
+  centres_ = &centres;
+  points_ = source.points_;  // element-wise: no allocation once the sizes are reached
+  rotations_.assign_owners(source.rotations_, owner, t0, t1);
+  kinds_.clear();
+  point_set_.clear();
+  proxy_radius_.clear();
+  for (const std::uint32_t o : owner) {
+    kinds_.push_back(source.kinds_[o]);
+    point_set_.push_back(source.point_set_[o]);
+    proxy_radius_.push_back(source.proxy_radius_[o]);
+  }
+}
+
 ConvexProxy RigidMotion::proxy(std::size_t body) const {
   return {points_[point_set_[body]], proxy_radius_[body]};
 }

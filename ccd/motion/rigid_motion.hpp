@@ -11,6 +11,8 @@
 #include <ccd/shape/shape_kind.hpp>
 
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 namespace ccd {
@@ -27,6 +29,15 @@ class RigidMotion {
  public:
   /// `centres` must outlive this object and be the trajectories of `scene`.
   RigidMotion(const Scene& scene, const Trajectories& centres);
+  /// No bodies yet (for assign_images).
+  RigidMotion() = default;
+  /// Makes this the motion of the local bodies of one step [t0, t1] of a scene that wraps
+  /// around (ccd/pipeline/periodic_images.hpp): body i is `source`'s body owner[i] (its
+  /// shape and spin; the spin pieces that overlap [t0, t1], so every query inside the step
+  /// answers as `source`'s) with its centre on path i of `centres` (the body's unwrapped
+  /// path or an image's). `centres` must outlive this object's use; storage is reused.
+  void assign_images(const RigidMotion& source, const Trajectories& centres, std::span<const std::uint32_t> owner,
+                     double t0, double t1);
 
   std::size_t size() const { return kinds_.size(); }
   const Trajectories& centres() const { return *centres_; }
@@ -48,7 +59,7 @@ class RigidMotion {
   double max_point_speed(std::size_t body, double u0, double u1) const;
 
  private:
-  const Trajectories* centres_;
+  const Trajectories* centres_ = nullptr;
   Rotations rotations_;
   std::vector<ShapeKind> kinds_;
   std::vector<std::vector<Vec3>> points_;  ///< per shape of the scene, then one origin

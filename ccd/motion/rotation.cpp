@@ -51,6 +51,20 @@ const RotationPiece& Rotations::piece_at(std::size_t body, double t) const {
   return it == ps.begin() ? ps.front() : *(it - 1);
 }
 
+void Rotations::assign_owners(const Rotations& source, std::span<const std::uint32_t> owner, double t0, double t1) {
+  pieces_.clear();
+  first_.assign(1, 0);
+  if (source.empty()) return;
+  for (const std::uint32_t o : owner) {
+    const auto ps = source.pieces(o);
+    const std::size_t before = pieces_.size();
+    for (const RotationPiece& p : ps)
+      if (p.t1 >= t0 && p.t0 <= t1) pieces_.push_back(p);
+    if (pieces_.size() == before) pieces_.push_back(source.piece_at(o, t0));  // [t0, t1] outside [0, horizon]
+    first_.push_back(static_cast<std::uint32_t>(pieces_.size()));
+  }
+}
+
 double Rotations::max_omega(std::size_t body, double u0, double u1) const {
   double m = 0.0;
   for (const RotationPiece& p : pieces(body))

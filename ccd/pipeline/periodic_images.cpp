@@ -22,7 +22,7 @@ ImageShift wrap_jump(const PeriodicBox& box, const Piece& prev, const Piece& nex
   return s;
 }
 
-const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajectories& motion) {
+const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajectories& motion, const RigidMotion* rigid) {
   source_ = &motion;
   const PeriodicBox& box = *motion.periodic();
   const std::size_t n = motion.size();
@@ -55,7 +55,9 @@ const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajector
   ctx_ = ctx;
   ctx_.start = states_;
   ctx_.exact = ctx.exact ? &local_ : nullptr;
-  ctx_.rigid = nullptr;
+  rigid_source_ = rigid ? rigid : ctx.rigid;
+  if (rigid_source_) rigid_.assign_images(*rigid_source_, local_, owner_, ctx.t0, ctx.t1);
+  ctx_.rigid = ctx.rigid ? &rigid_ : nullptr;
   if (ctx_.walls) {  // no walls on a wrapped axis: the unwrapped motion is free there
     constexpr double kInf = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k)
@@ -92,6 +94,7 @@ bool PeriodicImages::add_images(const std::vector<Aabb>& boxes) {
     });
   }
   ctx_.start = states_;
+  if (rigid_source_ && states_.size() > n) rigid_.assign_images(*rigid_source_, local_, owner_, ctx_.t0, ctx_.t1);
   return states_.size() > n;
 }
 

@@ -44,7 +44,7 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
     out.static_earliest.clear();
     out.static_contacts.clear();
     out.static_tests_saved = 0;
-    run_periodic(ctx, motion, out, times);
+    run_periodic(ctx, motion, out, times, rigid);
     return;
   }
   StepTimes local;
@@ -149,14 +149,14 @@ void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, Ste
 }
 
 void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out,
-                                StepTimes* times) {
+                                StepTimes* times, const RigidMotion* rigid) {
   StepTimes local;
   Stopwatch watch(times != nullptr);
   if (!images_) images_ = std::make_unique<PeriodicImages>();
   PeriodicImages& im = *images_;
 
   watch.start();
-  bound_->prepare(im.begin(ctx, motion), boxes_);
+  bound_->prepare(im.begin(ctx, motion, rigid), boxes_);
   if (im.add_images(boxes_)) bound_->prepare(im.context(), boxes_);
   watch.stop(local.bound);
 
@@ -189,7 +189,9 @@ void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& moti
   out.passed.clear();
   out.earliest.clear();
   out.contacts.clear();
-  const NarrowInput base{&im.motion(), im.context().start, {}, ctx.t0, ctx.t1, sample_test(), nullptr};
+  // Rigid scenes: the local bodies' shapes and spins (their owners'), looked up per pair.
+  const RigidMotion* local_rigid = rigid ? im.rigid() : nullptr;
+  const NarrowInput base{&im.motion(), im.context().start, {}, ctx.t0, ctx.t1, sample_test(), local_rigid};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
   for (std::size_t i = 0; i < image_pairs_.size();) {
     const std::uint32_t a = image_pairs_[i].a, b = image_pairs_[i].b;
@@ -212,7 +214,8 @@ void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& moti
       watch.start();
       NarrowInput in = base;
       if (from_earliest) in.t0 = std::max(ctx.t0, std::min(t.earliest, ctx.t1));
-      const ContactResult c = narrow_(in, q.x, q.y);
+      const ContactResult c = local_rigid ? table_->find(local_rigid->kind(q.x), local_rigid->kind(q.y))(in, q.x, q.y)
+                                          : narrow_(in, q.x, q.y);
       watch.stop(local.narrow);
       if (c.found() && (!best || c.toi < best->toi)) best = c;
     }

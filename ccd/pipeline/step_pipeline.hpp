@@ -32,7 +32,9 @@
 // (ccd/pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
 // image), each candidate image pair tested and solved with its shift, and reported as the
 // pair of bodies: once per pair in `candidates` and `passed` (earliest: the least over its
-// image pairs) and in `contacts` (the earliest contact over its image pairs).
+// image pairs) and in `contacts` (the earliest contact over its image pairs). With `rigid`,
+// each image keeps its body's shape and spin, and the narrow table entry is looked up per
+// image pair by its bodies' kinds.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
 // The narrow phase starts at t0 for every pair by default. With
 // PipelineOptions::narrow_from_earliest it starts at the pair test's `earliest` instead
@@ -121,7 +123,8 @@ class StepPipeline {
 
  private:
   // Periodic scenes: the step over the bodies and their images, mapped back to body pairs.
-  void run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times);
+  void run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
+                    const RigidMotion* rigid);
   struct ImagePair {
     std::uint32_t a, b;  // bodies, a < b
     ImageShift shift;    // of b's image relative to a's

@@ -78,6 +78,28 @@ struct PeriodicBox {
                               " periods of the wrapped box on axis " + std::to_string(k) + " in one step (use a smaller dt)");
     return {static_cast<std::int32_t>(std::min(lo, 0.0)), static_cast<std::int32_t>(std::max(hi, 0.0))};
   }
+  /// The shifts n in {-1, 0, +1} on axis k for which the centre box `b` moved by n
+  /// periods comes within `reach` of the centre box `a` on that axis (plus a rounding slack
+  /// of 1e-9 x (|min| + |max| + L + reach)), in increasing order, written to `out`; returns
+  /// how many. On a reflecting axis: just 0. With both centres in [min, max] over the
+  /// boxes' time span (positions on a wrapped axis stay there) and reach <= L / 2, no other
+  /// shift can bring them within `reach`, and at most one of these does except at exact
+  /// tangency on both sides: the candidate image shifts of a pair of bodies with enclosing
+  /// radii summing to `reach`.
+  int contact_shifts(const Aabb& a, const Aabb& b, double reach, int k, std::array<std::int32_t, 3>& out) const {
+    if (!wrap[static_cast<std::size_t>(k)]) {
+      out[0] = 0;
+      return 1;
+    }
+    int count = 0;
+    const double slack = 1e-9 * (std::fabs(min[k]) + std::fabs(max[k]) + period[k] + reach);
+    for (std::int32_t n = -1; n <= 1; ++n) {
+      const double off = shift(k, n).value();
+      const double gap = std::max(a.lo[k] - (b.hi[k] + off), (b.lo[k] + off) - a.hi[k]);
+      if (gap <= reach + slack) out[static_cast<std::size_t>(count++)] = n;
+    }
+    return count;
+  }
   /// Calls f(shift) for every image of `box` that meets the cell [min, max] on every
   /// wrapped axis (see image_range), the original (shift 0) included, first. Two boxes
   /// that overlap after some relative shift n have images (shift m and m + n) that both

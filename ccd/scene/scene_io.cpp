@@ -433,14 +433,17 @@ void validate_scene(const Scene& s, const std::string& file) {
           // Periodic axis: the centre lies in [min, max] (the body may straddle the seam), and
           // the edge is at least twice the largest diameter, so that at most one periodic
           // image of another body can be within contact distance (ccd/scene/periodic.hpp).
+          // A shaped body's radius is its enclosing radius: the same rule holds for it.
           if (b.position[a] < s.box->min[a] || b.position[a] > s.box->max[a])
             r.fail(p + ".position[" + std::to_string(a) + "]",
                    "centre must lie in [box.min, box.max] on a wrapped axis");
-          if (!(4.0 * b.radius <= s.box->max[a] - s.box->min[a]))
+          if (!(4.0 * b.radius <= s.box->max[a] - s.box->min[a])) {
+            if (rb.shape != kNoShape)
+              r.fail(p + ".shape", "box edge on wrapped axis " + std::to_string(a) +
+                                       " must be at least twice the shape's enclosing diameter (4 x enclosing radius)");
             r.fail(p + ".radius", "box edge on wrapped axis " + std::to_string(a) +
                                       " must be at least twice the body's diameter (4 x radius)");
-          if (rb.shape != kNoShape)
-            r.fail(p + ".shape", "a wrapped box (box.boundary) takes plain spheres only");
+          }
           continue;
         }
         if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])

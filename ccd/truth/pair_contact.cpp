@@ -27,18 +27,7 @@ bool periodic_piece_intervals(const PeriodicBox& box, const Piece& qa, const Pie
   std::array<std::array<std::int32_t, 3>, 3> shifts{};
   std::array<int, 3> count{};
   for (std::size_t k = 0; k < 3; ++k) {
-    const int i = static_cast<int>(k);
-    if (!box.wrap[k]) {
-      shifts[k][0] = 0;
-      count[k] = 1;
-      continue;
-    }
-    const double slack = 1e-9 * (std::fabs(box.min[i]) + std::fabs(box.max[i]) + box.period[i] + R);
-    for (std::int32_t n = -1; n <= 1; ++n) {
-      const double off = box.shift(i, n).value();
-      const double gap = std::max(ba.lo[i] - (bb.hi[i] + off), (bb.lo[i] + off) - ba.hi[i]);
-      if (gap <= R + slack) shifts[k][static_cast<std::size_t>(count[k]++)] = n;
-    }
+    count[k] = box.contact_shifts(ba, bb, R, static_cast<int>(k), shifts[k]);
     if (count[k] == 0) return false;
   }
   for (int x = 0; x < count[0]; ++x)

@@ -5,6 +5,7 @@
 #include <ccd/util/parallel_for.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <thread>
@@ -23,10 +24,12 @@ struct LabelledPiece {
 
 class BracketSearch {
  public:
+  /// `qa`, `qb`: when given, the centres' paths (pieces that cover the searched interval;
+  /// b's may be a periodic image); else the trajectories'.
   BracketSearch(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double lipschitz, double tol,
-                std::size_t max_evaluations)
+                std::size_t max_evaluations, const Piece* qa = nullptr, const Piece* qb = nullptr)
       : m_(m), a_(a), b_(b), L_(lipschitz), tol_(tol), max_(max_evaluations),
-        band_(std::max(lipschitz * tol, 1e-12 * (m.enclosing_radius(a) + m.enclosing_radius(b)))) {}
+        band_(std::max(lipschitz * tol, 1e-12 * (m.enclosing_radius(a) + m.enclosing_radius(b)))), qa_(qa), qb_(qb) {}
 
   void run(double lo, double hi) { search(lo, hi); }
   std::vector<LabelledPiece>& pieces() { return pieces_; }
@@ -42,7 +45,9 @@ class BracketSearch {
 
   ConvexDistance distance(double t) {
     ++evaluations_;
-    const Pose pa = m_.pose(a_, t), pb = m_.pose(b_, t);
+    Pose pa = m_.pose(a_, t), pb = m_.pose(b_, t);
+    if (qa_) pa.centre = qa_->position(t);
+    if (qb_) pb.centre = qb_->position(t);
     DistanceOptions o;
     // Resolve the distance to a fraction of what the time tolerance moves the bodies.
     o.tolerance = std::max(0.25 * L_ * tol_, 1e-15);
@@ -96,6 +101,8 @@ class BracketSearch {
   double L_, tol_;
   std::size_t max_;
   double band_;  ///< metres: separations up to this do not split an event
+  const Piece* qa_;
+  const Piece* qb_;
   std::size_t evaluations_ = 0;
   std::vector<LabelledPiece> pieces_;
 };
@@ -119,13 +126,11 @@ struct Candidate {
 
 }  // namespace
 
-std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
-                                double tol, std::size_t max_evaluations, std::vector<ContactEvent>& events,
-                                std::vector<EventError>& errors) {
-  const double horizon = m.centres().horizon();
-  const double lipschitz = m.max_point_speed(a, u0, u1) + m.max_point_speed(b, u0, u1);
-  BracketSearch search(m, a, b, lipschitz, tol, max_evaluations);
-  search.run(u0, u1);
+namespace {
+
+// The events of one finished search (see the header), appended to events and errors.
+void search_events(BracketSearch& search, std::uint32_t a, std::uint32_t b, double horizon, double tol,
+                   std::vector<ContactEvent>& events, std::vector<EventError>& errors) {
   auto& ps = search.pieces();
   // A certified gap narrower than the time tolerance between two uncertified runs does not
   // split an event (the search resolves crossings to about an ulp, leaving slivers).
@@ -172,7 +177,137 @@ std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint
     errors.push_back(err);
     i = k;
   }
+}
+
+// Merges the events of one pair found on adjacent common pieces and image shifts into
+// maximal events (a contact that continues through the seam, or across a break, is one
+// event): events whose brackets meet, or leave a gap of at most `tol`, are one event
+// whose enter bracket runs from the first one's start to the first certified overlap,
+// and whose exit bracket from the last certified overlap to the last one's end; grazing
+// when none of them has a certified overlap. A lone event is kept as it is.
+void merge_events(std::vector<ContactEvent>& events, std::vector<EventError>& errors, double tol,
+                  std::vector<ContactEvent>& out_events, std::vector<EventError>& out_errors) {
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<std::size_t> order(events.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  auto lo = [&](std::size_t i) { return events[i].enter - errors[i].enter_error; };
+  auto hi = [&](std::size_t i) { return events[i].exit + errors[i].exit_error; };
+  std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return lo(x) < lo(y) || (lo(x) == lo(y) && x < y); });
+  for (std::size_t g = 0; g < order.size();) {
+    std::size_t k = g + 1;
+    double run_hi = hi(order[g]);
+    while (k < order.size() && lo(order[k]) <= run_hi + tol) run_hi = std::max(run_hi, hi(order[k++]));
+    if (k == g + 1) {
+      out_events.push_back(events[order[g]]);
+      out_errors.push_back(errors[order[g]]);
+      g = k;
+      continue;
+    }
+    const double run_lo = lo(order[g]);
+    double first_overlap = inf, last_overlap = -inf;
+    for (std::size_t j = g; j < k; ++j) {
+      const std::size_t i = order[j];
+      if (errors[i].grazing) continue;
+      first_overlap = std::min(first_overlap, events[i].enter + errors[i].enter_error);
+      last_overlap = std::max(last_overlap, events[i].exit - errors[i].exit_error);
+    }
+    ContactEvent ev = events[order[g]];
+    EventError err;
+    auto middle = [](double x0, double x1, double& at, double& half) {
+      at = x0 + 0.5 * (x1 - x0);
+      half = std::max(at - x0, x1 - at);
+    };
+    if (first_overlap < inf) {
+      middle(run_lo, first_overlap, ev.enter, err.enter_error);
+      middle(last_overlap, run_hi, ev.exit, err.exit_error);
+    } else {
+      middle(run_lo, run_hi, ev.enter, err.enter_error);
+      ev.exit = ev.enter;
+      err.exit_error = err.enter_error;
+      err.grazing = true;
+    }
+    out_events.push_back(ev);
+    out_errors.push_back(err);
+    g = k;
+  }
+}
+
+}  // namespace
+
+std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
+                                double tol, std::size_t max_evaluations, std::vector<ContactEvent>& events,
+                                std::vector<EventError>& errors) {
+  const double horizon = m.centres().horizon();
+  const double lipschitz = m.max_point_speed(a, u0, u1) + m.max_point_speed(b, u0, u1);
+  BracketSearch search(m, a, b, lipschitz, tol, max_evaluations);
+  search.run(u0, u1);
+  search_events(search, a, b, horizon, tol, events, errors);
   return search.evaluations();
+}
+
+std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
+                                         double tol, std::size_t max_evaluations, std::vector<ContactEvent>& events,
+                                         std::vector<EventError>& errors) {
+  const Trajectories& traj = m.centres();
+  const PeriodicBox& box = *traj.periodic();
+  const double horizon = traj.horizon();
+  const double reach = m.enclosing_radius(a) + m.enclosing_radius(b);
+  const auto pa = traj.pieces(a), pb = traj.pieces(b);
+  const auto lb = traj.lows(b);
+  auto first_ending_after = [u0](std::span<const Piece> ps) {
+    auto it = std::lower_bound(ps.begin(), ps.end(), u0, [](const Piece& q, double x) { return q.t1 < x; });
+    return static_cast<std::size_t>(it - ps.begin());
+  };
+  std::size_t ia = first_ending_after(pa), ib = first_ending_after(pb);
+  std::vector<ContactEvent> found;
+  std::vector<EventError> found_errors;
+  std::size_t evaluations = 0;
+  for (; ia < pa.size() && ib < pb.size();) {
+    const Piece& qa = pa[ia];
+    const Piece& qb = pb[ib];
+    if (std::max(qa.t0, qb.t0) > u1) break;
+    // The common piece, inside [u0, u1]: both centres move on one piece each, inside the
+    // cell on the wrapped axes. Pieces of zero length (a centre on a face re-entering at
+    // once) hold one instant that the neighbouring piece holds too.
+    const double c0 = std::max({qa.t0, qb.t0, u0}), c1 = std::min({qa.t1, qb.t1, u1});
+    std::array<std::array<std::int32_t, 3>, 3> shifts{};
+    std::array<int, 3> count{};
+    bool possible = c1 > c0;
+    if (possible) {
+      const Aabb ba = qa.centre_bounds(c0, c1), bb = qb.centre_bounds(c0, c1);
+      for (int k = 0; k < 3 && possible; ++k) {
+        count[static_cast<std::size_t>(k)] = box.contact_shifts(ba, bb, reach, k, shifts[static_cast<std::size_t>(k)]);
+        possible = count[static_cast<std::size_t>(k)] > 0;
+      }
+    }
+    if (possible) {
+      const double lipschitz = m.max_point_speed(a, c0, c1) + m.max_point_speed(b, c0, c1);
+      for (int x = 0; x < count[0]; ++x)
+        for (int y = 0; y < count[1]; ++y)
+          for (int z = 0; z < count[2]; ++z) {
+            const ImageShift s{shifts[0][static_cast<std::size_t>(x)], shifts[1][static_cast<std::size_t>(y)],
+                               shifts[2][static_cast<std::size_t>(z)]};
+            Piece image = qb;
+            PieceLow low = lb[ib];
+            shift_piece(image, low, image_offset(box, s));
+            BracketSearch search(m, a, b, lipschitz, tol, max_evaluations - std::min(max_evaluations, evaluations),
+                                 &qa, &image);
+            search.run(c0, c1);
+            evaluations += search.evaluations();
+            search_events(search, a, b, horizon, tol, found, found_errors);
+          }
+    }
+    if (qa.t1 < qb.t1) {
+      ++ia;
+    } else if (qb.t1 < qa.t1) {
+      ++ib;
+    } else {
+      ++ia;
+      ++ib;
+    }
+  }
+  merge_events(found, found_errors, tol, events, errors);
+  return evaluations;
 }
 
 RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptions& options) {
@@ -192,24 +327,44 @@ RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptio
   parallel_for(W, threads, [&](std::size_t w, unsigned) {
     const double u0 = window_start(w), u1 = window_start(w + 1);
     std::vector<Aabb> boxes(n);
-    std::vector<std::uint32_t> order(n);
+    std::vector<std::uint32_t> owner(n);
     for (std::uint32_t i = 0; i < n; ++i) {
       boxes[i] = traj.swept_bounds(i, u0, u1);
       // Rounding margin: the swept box is computed in doubles.
       const double margin = 1e-9 * (1.0 + boxes[i].lo.cwiseAbs().maxCoeff() + boxes[i].hi.cwiseAbs().maxCoeff());
       boxes[i].lo.array() -= margin;
       boxes[i].hi.array() += margin;
-      order[i] = i;
+      owner[i] = i;
     }
+    // A box that wraps around: every image of a box that meets the cell joins the sweep,
+    // owned by its body (ccd/scene/periodic.hpp, for_each_image); two bodies that can touch
+    // through some image shift have two such images that overlap.
+    if (const PeriodicBox* pb = traj.periodic())
+      for (std::uint32_t i = 0; i < n; ++i)
+        pb->for_each_image(Aabb(boxes[i]), [&](const ImageShift& s) {
+          if (s == ImageShift{0, 0, 0}) return;
+          const Vec3 o = pb->offset(s);
+          const Aabb image{boxes[i].lo + o, boxes[i].hi + o};
+          boxes.push_back(image);
+          owner.push_back(i);
+        });
+    std::vector<std::uint32_t> order(boxes.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return boxes[x].lo.x() < boxes[y].lo.x(); });
     auto& cands = per_window[w];
     for (std::size_t p = 0; p < order.size(); ++p) {
       const Aabb& bp = boxes[order[p]];
       for (std::size_t q = p + 1; q < order.size() && boxes[order[q]].lo.x() <= bp.hi.x(); ++q) {
         if (!bp.overlaps(boxes[order[q]])) continue;
-        const std::uint32_t a = std::min(order[p], order[q]), b = std::max(order[p], order[q]);
-        cands.push_back({a, b, static_cast<std::uint32_t>(w)});
+        const std::uint32_t x = owner[order[p]], y = owner[order[q]];
+        if (x == y) continue;
+        cands.push_back({std::min(x, y), std::max(x, y), static_cast<std::uint32_t>(w)});
       }
+    }
+    if (traj.periodic()) {  // a pair may overlap through several images
+      std::sort(cands.begin(), cands.end(), [](const Candidate& c, const Candidate& d) { return std::tie(c.a, c.b) < std::tie(d.a, d.b); });
+      cands.erase(std::unique(cands.begin(), cands.end(), [](const Candidate& c, const Candidate& d) { return c.a == d.a && c.b == d.b; }),
+                  cands.end());
     }
   });
   std::vector<Candidate> all;
@@ -245,7 +400,9 @@ RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptio
       }
       return;
     }
-    evals[r] = pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r]);
+    evals[r] = traj.periodic()
+                   ? periodic_pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r])
+                   : pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r]);
   });
   for (std::size_t r = 0; r < runs.size(); ++r) {
     out.stats.evaluations += evals[r];

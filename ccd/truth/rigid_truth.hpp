@@ -30,6 +30,15 @@
 // enclosing sphere's, ccd::Trajectories::swept_bounds, grown by a rounding margin) is
 // swept along x; a pair is searched on each run of consecutive windows where its boxes
 // overlap. Pairs and runs go to threads; the result does not depend on the thread count.
+//
+// A box that wraps around (ccd/scene/periodic.hpp): the images of every swept box that
+// meet the cell join the sweep (a pair is a candidate when any two of its images' boxes
+// overlap), and a run is searched per common trajectory piece (both centres in the cell on
+// wrapped axes, no wrap inside) against every image shift of b whose centre box comes
+// within the enclosing radii R_a + R_b of a's (at most one per axis, as for spheres: the
+// edge is at least 4 x the largest enclosing radius); the events of all pieces and shifts
+// are merged where their brackets meet (a contact that continues through the seam is one
+// event). Orientation is not changed by a wrap.
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -68,6 +77,14 @@ struct RigidTruthResult {
   std::vector<EventError> errors;    ///< one per event
   RigidTruthStats stats;
 };
+
+/// The same in a scene that wraps around (motion.centres().periodic()): per common
+/// trajectory piece in [u0, u1] and image shift of b that can bring the enclosing spheres
+/// within contact, the bracket search with b's centre on that image; events merged where
+/// their brackets meet (see the header comment). max_evaluations bounds the sum.
+std::size_t periodic_pair_bracket_events(const RigidMotion& motion, std::uint32_t a, std::uint32_t b, double u0,
+                                         double u1, double time_tolerance, std::size_t max_evaluations,
+                                         std::vector<ContactEvent>& events, std::vector<EventError>& errors);
 
 RigidTruthResult compute_rigid_truth(const RigidMotion& motion, const RigidTruthOptions& options = {});
 

@@ -9,7 +9,8 @@
 //           size x size / sqrt(elongation) x size / elongation.
 // Draw order per body: sphere or not (when spheres > 0), the shape (rocks), the position,
 // the velocity, the orientation (4 normal numbers), the spin axis and rate. With free = 1
-// the same bodies tumble torque-free from that angular velocity (docs/rigid_bodies.md).
+// the same bodies tumble torque-free from that angular velocity (docs/rigid_bodies.md); with
+// wrap = 1 the box loops around on every axis (docs/periodic.md).
 #include <experiments/generators/box_scene.hpp>
 #include <experiments/generators/placement.hpp>
 #include <experiments/generators/registry.hpp>
@@ -42,6 +43,8 @@ constexpr ParameterSpec kParameters[] = {
      kVolumeFraction},
     kOverlapParameter,
     {"free", 0.0, "1: torque-free spin (\"spin\": \"free\", the same draws; rocks centred on their centre of mass)",
+     ParameterKind::Integer, {0.0, 1.0, false, false}},
+    {"wrap", 0.0, "1: the box wraps around on every axis (periodic, no walls); 0: elastic walls",
      ParameterKind::Integer, {0.0, 1.0, false, false}},
 };
 
@@ -105,6 +108,9 @@ ccd::Scene generate(const ParameterSet& p, Kind kind) {
     }
     scene.add_rigid_body(b, r);
   }
+  // The side is at least 4 x the largest enclosing radius (cube_side): twice the largest
+  // enclosing diameter, as wrapping needs. The draws do not change.
+  if (p.integer("wrap") == 1) scene.box->boundary.fill(ccd::Boundary::Wrap);
   return scene;
 }
 

@@ -75,13 +75,42 @@ TEST_CASE("box.boundary: bad input names the field", "[scene][periodic]") {
     j["bodies"][1]["position"] = {8.25, 5, 5};
     CHECK(error_of(j) == "s.json: bodies[1].position[0]: centre must lie in [box.min, box.max] on a wrapped axis");
   }
-  SECTION("rigid shapes are refused") {
+  SECTION("a shaped body's enclosing radius decides the edge rule") {
     j["format"] = "ccdlab-scene/2";
-    j["shapes"] = json::parse(R"([{"name": "c", "kind": "box", "half_extents": [0.5, 0.25, 0.25]}])");
+    // A stick of enclosing radius 1.25 + 0.5 = 1.75 (rounded up by a few ulps): accepted.
+    j["shapes"] = json::parse(R"([{"name": "s", "kind": "capsule", "half_length": 1.25, "radius": 0.5}])");
     j["bodies"][1].erase("radius");
-    j["bodies"][1]["shape"] = "c";
-    CHECK(error_of(j) == "s.json: bodies[1].shape: a wrapped box (box.boundary) takes plain spheres only");
+    j["bodies"][1]["shape"] = "s";
+    CHECK(error_of(j).empty());
+    j["shapes"][0]["half_length"] = 1.5 + 1.0 / 1024;  // 4 x 2.0009765625 > 8
+    CHECK(error_of(j) == "s.json: bodies[1].shape: box edge on wrapped axis 0 must be at least twice the shape's "
+                         "enclosing diameter (4 x enclosing radius)");
   }
+}
+
+TEST_CASE("box.boundary: shaped bodies wrap (every kind, prescribed and free spin)", "[scene][periodic][rigid]") {
+  json j = json::parse(R"({"format": "ccdlab-scene/2", "horizon": 2.0,
+    "box": {"min": [0,0,0], "max": [8,8,8], "boundary": ["wrap", "reflect", "wrap"]},
+    "shapes": [{"name": "stick", "kind": "capsule", "half_length": 1.0, "radius": 0.125},
+               {"name": "crate", "kind": "box", "half_extents": [0.5, 0.25, 0.125]},
+               {"name": "rock", "kind": "hull", "points": [[0.5,0,0], [0,0.5,0], [0,0,0.5], [-0.25,-0.25,-0.25]]}],
+    "bodies": [{"shape": "stick", "position": [0,4,8], "velocity": [1,0,0], "angular_velocity": [0,0,4]},
+               {"shape": "crate", "position": [7.5,5,5], "angular_velocity": [1,2,3], "spin": "free"},
+               {"shape": "rock", "position": [4,4,4]},
+               {"radius": 0.5, "position": [2,2,2]}]})");
+  const ccd::Scene s = ccd::scene_from_json(j, "s.json");
+  REQUIRE(s.wraps());
+  CHECK(s.has_non_spheres());
+  CHECK(s.kind(0) == ccd::ShapeKind::Capsule);
+  CHECK(s.kind(1) == ccd::ShapeKind::Box);
+  CHECK(s.rigid_body(1).spin == ccd::SpinModel::Free);
+  // Round trip keeps shapes, spin and boundary.
+  const ccd::Scene back = ccd::scene_from_json(ccd::scene_to_json(s), "s.json");
+  CHECK(back.box->boundary == s.box->boundary);
+  CHECK(ccd::scene_digest(back) == ccd::scene_digest(s));
+  // On the reflecting axis y the enclosing sphere must start inside the walls, as before.
+  j["bodies"][0]["position"] = {0, 0.5, 8};  // stick's enclosing radius 1.125 > 0.5
+  CHECK(error_of(j) == "s.json: bodies[0].position: body must start inside the box (centre at least radius from every wall)");
 }
 
 TEST_CASE("periodic box: images of a box meet the cell, nearest image", "[scene][periodic]") {

@@ -65,3 +65,29 @@ TEST_CASE("spinning generators: overlap keeps enclosing spheres that overlap at 
   // for the first body, which is never redrawn.
   CHECK(make("sticks", with).rigid[0].angular_velocity == make("sticks", p).rigid[0].angular_velocity);
 }
+
+TEST_CASE("spinning generators: wrap = 1 loops the box around, the draws unchanged", "[generators][rigid][periodic]") {
+  for (const char* name : {"sticks", "plates", "crates", "rocks"}) {
+    for (const int free : {0, 1}) {
+      CAPTURE(name, free);
+      const json p = {{"bodies", 40}, {"seed", 4}, {"free", free}};
+      json w = p;
+      w["wrap"] = 1;
+      const ccd::Scene walls = make(name, p), wrapped = make(name, w);
+      CHECK_FALSE(walls.wraps());
+      REQUIRE(wrapped.wraps());
+      for (int k = 0; k < 3; ++k) CHECK(wrapped.box->wraps(k));
+      CHECK(wrapped.box->min == walls.box->min);
+      CHECK(wrapped.box->max == walls.box->max);
+      REQUIRE(wrapped.bodies.size() == walls.bodies.size());
+      for (std::size_t i = 0; i < walls.bodies.size(); ++i) {
+        CHECK(wrapped.bodies[i].position == walls.bodies[i].position);
+        CHECK(wrapped.bodies[i].velocity == walls.bodies[i].velocity);
+        CHECK(wrapped.rigid[i].angular_velocity == walls.rigid[i].angular_velocity);
+        CHECK(wrapped.rigid[i].spin == walls.rigid[i].spin);
+        // The edge rule of a wrapped box: at least 4 x the enclosing radius.
+        CHECK(4.0 * wrapped.bodies[i].radius <= (wrapped.box->max - wrapped.box->min).minCoeff());
+      }
+    }
+  }
+}
