@@ -5,9 +5,11 @@
 // the horizon, across a corner, mixed wrap and walls), a random dyadic scene of spinning
 // sticks, crates and plates with one tumbling freely, and a generated `sticks wrap=1`.
 #include "../../experiments/method.hpp"
+#include "../../experiments/run_experiment.hpp"
 #include "../../experiments/runner.hpp"
 #include "../ccd/scene/periodic_rigid_scenes.hpp"
 
+#include <ccd/scene/input_error.hpp>
 #include <ccd/truth/rigid_truth.hpp>
 #include <experiments/generators/registry.hpp>
 
@@ -69,4 +71,19 @@ TEST_CASE("every method keeps its guarantee on random wrapped rigid scenes", "[r
                  {"horizon", 0.5}, {"wrap", 1}});
   REQUIRE(sticks.wraps());
   check_every_method(sticks, 0.05, "sticks wrap=1");
+}
+
+TEST_CASE("@earliest refuses shaped bodies in a scene that wraps around, naming the method", "[runner][periodic][rigid]") {
+  ccdlab::Experiment e;
+  e.scene_generator = {{"generator", "sticks"}, {"bodies", 6}, {"wrap", 1}};
+  e.methods = {"capsule/grid", "capsule/grid@earliest"};
+  try {
+    ccdlab::load_experiment_scene(e, "e.json");
+    FAIL("an @earliest method on a wrapped rigid scene was accepted");
+  } catch (const ccd::InputError& err) {
+    CHECK(err.field() == "methods[1]");
+    CHECK(std::string(err.what()).find("use the fixed-step method capsule/grid") != std::string::npos);
+  }
+  e.methods = {"capsule/grid"};
+  CHECK(ccdlab::load_experiment_scene(e, "e.json").wraps());
 }
