@@ -11,6 +11,7 @@
 #include <ccd/broad_phase/static_index.hpp>
 #include <ccd/queries/convex_distance.hpp>
 #include <tests/bounds/bound_test_support.hpp>
+#include <tests/ccd/scene/body_builder.hpp>
 #include <tests/ccd/scene/scenery_support.hpp>
 
 #include <random>
@@ -30,15 +31,6 @@ struct StaticCase {
   double tc = 0.0;        // a time of contact in [t0, t1]
 };
 
-Body ball(double r, const Vec3& p, const Vec3& v, const Vec3& a = Vec3::Zero()) {
-  Body b;
-  b.radius = r;
-  b.position = p;
-  b.velocity = v;
-  b.acceleration = a;
-  return b;
-}
-
 std::vector<StaticCase> constructed_cases() {
   std::vector<StaticCase> cs;
   const StaticPolygon sq = square_z(0, 0, 0, 1);  // [0,1]^2 at z = 0
@@ -56,23 +48,23 @@ std::vector<StaticCase> constructed_cases() {
     cs.push_back(std::move(c));
   };
   // Falls onto the face, tangent exactly at t1 = 1 (z = r = 0.25 at t = 1).
-  add("tangent to the face at t1", ball(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}), sq, 0.0, 1.0, 1.0);
+  add("tangent to the face at t1", ccd::test::body(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}), sq, 0.0, 1.0, 1.0);
   // Starts touching at t0 and leaves.
-  add("touching at t0, leaving", ball(0.25, {0.5, 0.5, 0.25}, {0, 0, 3}), sq, 0.0, 1.0, 0.0);
+  add("touching at t0, leaving", ccd::test::body(0.25, {0.5, 0.5, 0.25}, {0, 0, 3}), sq, 0.0, 1.0, 0.0);
   // Slides parallel to the face at height exactly r, entering over the edge x = 0 at t = 0.5.
-  add("parallel to the face at distance r", ball(0.25, {-1, 0.5, 0.25}, {2, 0, 0}), sq, 0.0, 1.0, 0.5);
+  add("parallel to the face at distance r", ccd::test::body(0.25, {-1, 0.5, 0.25}, {2, 0, 0}), sq, 0.0, 1.0, 0.5);
   // In the polygon's plane, passing the edge x = 1 at distance r (closest at every t).
-  add("grazing an edge", ball(0.5, {1.5, -2, 0}, {0, 4, 0}), sq, 0.0, 1.0, 0.5);
+  add("grazing an edge", ccd::test::body(0.5, {1.5, -2, 0}, {0, 4, 0}), sq, 0.0, 1.0, 0.5);
   // Down the line (1.375, 1.5, z): passes the vertex (1, 1, 0) at 0.625 = r at t = 0.5.
-  add("grazing a vertex", ball(0.625, {1.375, 1.5, 1}, {0, 0, -2}), sq, 0.0, 1.0, 0.5);
+  add("grazing a vertex", ccd::test::body(0.625, {1.375, 1.5, 1}, {0, 0, -2}), sq, 0.0, 1.0, 0.5);
   // At rest at distance exactly r below the face.
-  add("at rest, touching", ball(0.5, {0.5, 0.75, -0.5}, Vec3::Zero()), sq, 0.0, 1.0, 0.0);
+  add("at rest, touching", ccd::test::body(0.5, {0.5, 0.75, -0.5}, Vec3::Zero()), sq, 0.0, 1.0, 0.0);
   // A fast ball through a thin polygon: crosses the plane at t = 0.5.
-  add("tunnelling through", ball(0.125, {0.5, 0.5, 50}, {0, 0, -100}), sq, 0.0, 1.0, 0.5);
+  add("tunnelling through", ccd::test::body(0.125, {0.5, 0.5, 50}, {0, 0, -100}), sq, 0.0, 1.0, 0.5);
   {
     // Acceleration change: falls with a = -4 until t = 0.25 (z = 0.875, v = -1), then glides
     // at constant velocity: z = 0.25 at t = 0.875.
-    Body b = ball(0.25, {0.5, 0.5, 1}, Vec3::Zero(), {0, 0, -4});
+    Body b = ccd::test::body(0.25, {0.5, 0.5, 1}, Vec3::Zero(), {0, 0, -4});
     b.acceleration_changes.push_back({0.25, Vec3::Zero()});
     add("after an acceleration change", b, sq, 0.0, 1.0, 0.875);
   }
@@ -82,22 +74,22 @@ std::vector<StaticCase> constructed_cases() {
     // x = 1.5 (y in [5, 7], z in [1, 3]) at t = 0.4375 (x = 1.25, y = 5.5); the unreflected
     // path never does.
     const StaticPolygon wallside = make_polygon({{1.5, 5, 1}, {1.5, 7, 1}, {1.5, 7, 3}, {1.5, 5, 3}});
-    add("after a wall reflection", ball(0.25, {1, 2, 2}, {-4, 8, 0}), wallside, 0.0, 0.5, 0.4375,
+    add("after a wall reflection", ccd::test::body(0.25, {1, 2, 2}, {-4, 8, 0}), wallside, 0.0, 0.5, 0.4375,
         WallBox{Vec3::Zero(), Vec3::Constant(8)});
     // Contact exactly at the reflection: the polygon y = 3.75 (x in [0, 1]) is touched when
     // the ball reflects (y = 3.5 = 3.75 - r) at t = 0.1875.
     const StaticPolygon at_wall = make_polygon({{0, 3.75, 1}, {0, 3.75, 3}, {1, 3.75, 3}, {1, 3.75, 1}});
-    add("contact at the wall reflection", ball(0.25, {1, 2, 2}, {-4, 8, 0}), at_wall, 0.0, 0.5, 0.1875,
+    add("contact at the wall reflection", ccd::test::body(0.25, {1, 2, 2}, {-4, 8, 0}), at_wall, 0.0, 0.5, 0.1875,
         WallBox{Vec3::Zero(), Vec3::Constant(8)});
   }
   {
     // Far from the origin: the tangent-at-t1 case moved by (2^30, -2^30, 2^29).
     const Vec3 F(1073741824.0, -1073741824.0, 536870912.0);
-    add("far from the origin, tangent at t1", ball(0.25, Vec3(0.5, 0.5, 2.25) + F, {0, 0, -2}),
+    add("far from the origin, tangent at t1", ccd::test::body(0.25, Vec3(0.5, 0.5, 2.25) + F, {0, 0, -2}),
         square_z(F.x(), F.y(), F.z(), 1), 0.0, 1.0, 1.0);
   }
   // A later step window [0.5, 1]: contact at its start.
-  add("contact at a later step's start", ball(0.25, {0.5, 0.5, 1.25}, {0, 0, -2}), sq, 0.5, 1.0, 0.5);
+  add("contact at a later step's start", ccd::test::body(0.25, {0.5, 0.5, 1.25}, {0, 0, -2}), sq, 0.5, 1.0, 0.5);
   return cs;
 }
 
@@ -135,7 +127,7 @@ TEST_CASE("Bound::test_static: far polygons are disjoint for the tight bounds", 
   // loosest may say Possible; the exact-motion and instant ones must not.
   test::Step step;
   step.scene.horizon = 1.0;
-  step.scene.bodies.push_back(ball(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}));
+  step.scene.bodies.push_back(ccd::test::body(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}));
   step.finish(0.0, 1.0);
   const StaticPolygon far = square_z(3, 0, 0, 1);
   for (const char* name : {"sphere", "aabb", "swept_aabb", "capsule", "horn", "enclosing_sphere"}) {

@@ -9,6 +9,7 @@
 #include "../../experiments/method.hpp"
 #include "../../experiments/run_experiment.hpp"
 #include "../../experiments/runner.hpp"
+#include "../ccd/scene/body_builder.hpp"
 #include "../ccd/scene/scenery_support.hpp"
 
 #include <bounds/registry.hpp>
@@ -23,15 +24,6 @@ namespace {
 using ccd::Body;
 using ccd::Vec3;
 
-Body ball(double r, const Vec3& p, const Vec3& v, const Vec3& a = Vec3::Zero()) {
-  Body b;
-  b.radius = r;
-  b.position = p;
-  b.velocity = v;
-  b.acceleration = a;
-  return b;
-}
-
 ccd::Scene adversarial_scene() {
   ccd::Scene s;
   s.horizon = 1.0;
@@ -44,22 +36,22 @@ ccd::Scene adversarial_scene() {
     s.scenery.push_back(ccd::polygon_from_vertices(std::move(polygon)));
   };
   const std::vector<Vec3> sq{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
-  add(0, ball(0.625, {1.375, 1.5, 1}, {0, 0, -2}), sq);   // grazes the vertex (1, 1, 0) at t = 0.5
-  add(1, ball(0.5, {1.5, -2, 0}, {0, 4, 0}), sq);         // in the plane, grazes the edge x = 1 over [0.5, 0.75]
-  add(2, ball(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}), sq);   // tangent to the face at the horizon t = 1
-  add(3, ball(0.25, {-1, 0.5, 0.25}, {2, 0, 0}), sq);     // slides at height r, enters over x = 0 at 0.5
+  add(0, ccd::test::body(0.625, {1.375, 1.5, 1}, {0, 0, -2}), sq);   // grazes the vertex (1, 1, 0) at t = 0.5
+  add(1, ccd::test::body(0.5, {1.5, -2, 0}, {0, 4, 0}), sq);         // in the plane, grazes the edge x = 1 over [0.5, 0.75]
+  add(2, ccd::test::body(0.25, {0.5, 0.5, 2.25}, {0, 0, -2}), sq);   // tangent to the face at the horizon t = 1
+  add(3, ccd::test::body(0.25, {-1, 0.5, 0.25}, {2, 0, 0}), sq);     // slides at height r, enters over x = 0 at 0.5
   {
-    Body b = ball(0.25, {0.5, 0.5, 1}, Vec3::Zero(), {0, 0, -4});  // z = 0.25 at t = 0.875
+    Body b = ccd::test::body(0.25, {0.5, 0.5, 1}, Vec3::Zero(), {0, 0, -4});  // z = 0.25 at t = 0.875
     b.acceleration_changes.push_back({0.25, Vec3::Zero()});
     add(4, b, sq);
   }
-  add(5, ball(0.125, {0.5, 0.5, 20}, {0, 0, -40}), sq);   // through the thin plate at t ~ 0.5
+  add(5, ccd::test::body(0.125, {0.5, 0.5, 20}, {0, 0, -40}), sq);   // through the thin plate at t ~ 0.5
   // Wall x = 0: from (1, 2, 2) at (-4, 8, 0) the ball reflects at t = 0.1875 (x = 0.25,
   // y = 3.5), reaches the plate x = 1.5 at t = 0.4375; touches the plate y = 3.75 exactly
   // at the reflection.
-  s.bodies.push_back(ball(0.25, {1, 2, 2}, {-4, 8, 0}));
+  s.bodies.push_back(ccd::test::body(0.25, {1, 2, 2}, {-4, 8, 0}));
   s.scenery.push_back(ccd::polygon_from_vertices({{1.5, 5, 1}, {1.5, 7, 1}, {1.5, 7, 3}, {1.5, 5, 3}}));
-  s.bodies.push_back(ball(0.25, {1, 2, 6}, {-4, 8, 0}));
+  s.bodies.push_back(ccd::test::body(0.25, {1, 2, 6}, {-4, 8, 0}));
   s.scenery.push_back(ccd::polygon_from_vertices({{0, 3.75, 5}, {0, 3.75, 7}, {1, 3.75, 7}, {1, 3.75, 5}}));
   return s;
 }
@@ -126,8 +118,8 @@ TEST_CASE("conservative methods miss no body-static event among thin plates", "[
 TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]") {
   ccd::Scene s;
   s.horizon = 1.0;
-  s.bodies.push_back(ball(0.5, {0, 0, 0}, {1, 0, 0}));
-  s.bodies.push_back(ball(0.5, {3, 0, 0}, {-1, 0, 0}));
+  s.bodies.push_back(ccd::test::body(0.5, {0, 0, 0}, {1, 0, 0}));
+  s.bodies.push_back(ccd::test::body(0.5, {3, 0, 0}, {-1, 0, 0}));
   const ccd::Trajectories traj(s);
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   ccdlab::RunInput in;
