@@ -1,4 +1,6 @@
 // `box.boundary` in scene files and the periodic box's images.
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/periodic.hpp>
 #include <ccd/scene/scene_digest.hpp>
@@ -12,20 +14,13 @@ using nlohmann::json;
 
 namespace {
 
+using ccd::test::error_of;
+
 json wrapped_scene() {
   return json::parse(R"({"format": "ccdlab-scene/1", "horizon": 2.0,
     "box": {"min": [0,0,0], "max": [8,8,8], "boundary": "wrap"},
     "bodies": [{"radius": 1, "position": [0,4,8], "velocity": [1,0,0]},
                {"radius": 0.5, "position": [7.5,5,5]}]})");
-}
-
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const ccd::InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

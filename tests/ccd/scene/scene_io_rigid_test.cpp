@@ -1,4 +1,6 @@
 // ccdlab-scene/2: shapes, orientation and prescribed spin.
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -10,6 +12,8 @@ using ccd::Vec3;
 using nlohmann::json;
 
 namespace {
+
+using ccd::test::error_of;
 
 json rigid_scene() {
   return json::parse(R"({"format": "ccdlab-scene/2", "horizon": 2.0,
@@ -25,15 +29,6 @@ json rigid_scene() {
                {"shape": "stick", "position": [12, 5, 5], "orientation": [0, 0, 0, 1]},
                {"shape": "rock", "position": [15, 5, 5]},
                {"shape": "ball", "position": [15, 15, 5]}]})");
-}
-
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // ccdlab-scene/2 with free spin and mass properties: the fields, their defaults, the
 // round trip, and every refusal naming the file, the field and the index.
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -11,6 +13,8 @@ using nlohmann::json;
 
 namespace {
 
+using ccd::test::error_of;
+
 json spin_scene() {
   return json::parse(R"({"format": "ccdlab-scene/2", "horizon": 2.0,
     "shapes": [{"name": "crate", "kind": "box", "half_extents": [0.5, 0.25, 0.125]},
@@ -21,15 +25,6 @@ json spin_scene() {
                {"shape": "rock", "position": [8, 0, 0], "spin": "free", "density": 500, "angular_velocity": [0, 1, 0]},
                {"shape": "crate", "position": [12, 0, 0], "spin": "prescribed", "inertia": [1, 2, 2.5]},
                {"shape": "wedge", "position": [16, 0, 0]}]})");
-}
-
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const ccd::InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

@@ -1,3 +1,5 @@
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
@@ -10,6 +12,8 @@ using nlohmann::json;
 
 namespace {
 
+using ccd::test::error_of;
+
 json valid_scene() {
   return json::parse(R"({"format": "ccdlab-scene/1", "horizon": 2.0, "gravity": [0, -9.81, 0],
     "box": {"min": [0,0,0], "max": [10,10,10]},
@@ -18,15 +22,6 @@ json valid_scene() {
 }
 
 // Parses j and returns the error message, or "" when it parses.
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 }  // namespace
 
 TEST_CASE("a valid scene parses with defaults filled in", "[scene]") {

@@ -1,4 +1,6 @@
 // The scene field `velocity_changes` (docs/formats.md): read, written, validated.
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -10,20 +12,13 @@ using nlohmann::json;
 
 namespace {
 
+using ccd::test::error_of;
+
 json scene_with_jumps() {
   return json::parse(R"({"format": "ccdlab-scene/1", "horizon": 2.0,
     "bodies": [{"radius": 0.5, "position": [1,2,3], "velocity": [0,0,1],
                 "velocity_changes": [{"t": 0.5, "velocity": [1, 0, 0]}, {"t": 1.25, "velocity": [0, -2, 0]}]},
                {"radius": 0.25, "position": [5,5,5]}]})");
-}
-
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const ccd::InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // The scenery fields of a scene (docs/scenery.md): reading, validation with the field and
 // the reason, writing back, the digest, and the polygon helpers of ccd/scene/scenery.hpp.
+#include "scene_error.hpp"
+
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -12,6 +14,8 @@ using nlohmann::json;
 
 namespace {
 
+using ccd::test::error_of;
+
 json scene_with_scenery() {
   return json::parse(R"({"format": "ccdlab-scene/2", "horizon": 2.0, "gravity": [0, 0, -1],
     "box": {"min": [-4, -4, 0], "max": [4, 4, 8]},
@@ -20,15 +24,6 @@ json scene_with_scenery() {
                 {"polygon": [[0, 0, 1], [1, 0, 1.5], [0, 1, 1]], "comment": "a ramp"}],
     "scenery_mesh": {"vertices": [[3, 3, 3], [3.5, 3, 3], [3.5, 3.5, 3], [3, 3.5, 3]],
                      "triangles": [[0, 1, 2], [0, 2, 3]]}})");
-}
-
-std::string error_of(const json& j) {
-  try {
-    ccd::scene_from_json(j, "s.json");
-  } catch (const ccd::InputError& e) {
-    return e.what();
-  }
-  return "";
 }
 
 json with_polygon(json polygon) {
