@@ -102,37 +102,31 @@ def main():
     plots = os.path.join(a.o, "plots")
     os.makedirs(plots, exist_ok=True)
     frac = lambda r, k: r[k] / r["true_events"] if r["true_events"] else 0.0  # noqa: E731
-    # 1: against the horizon, at the middle elongation.
+
+    def plot(select, x, xlabel, title, name):
+        """Lost and invented fractions of each shape's rows chosen by `select`, against `x`."""
+        fig, ax = plt.subplots(figsize=(6.4, 4.2))
+        for gen in shapes:
+            rs = [r for r in rows if r["shape"] == gen and select(r)]
+            ax.plot([r[x] for r in rs], [frac(r, "lost") for r in rs], "o-", label=f"{gen}: lost")
+            ax.plot([r[x] for r in rs], [frac(r, "invented") for r in rs], "s--", label=f"{gen}: invented")
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel("fraction of the true events")
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        path = os.path.join(plots, name)
+        fig.tight_layout()
+        fig.savefig(path, dpi=110)
+        return path
+
+    # 1: against the horizon, at the middle elongation; 2: against the elongation, at the full horizon.
     mid = elongations[len(elongations) // 2]
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for gen in shapes:
-        rs = [r for r in rows if r["shape"] == gen and r["elongation"] == mid]
-        ax.plot([r["horizon"] for r in rs], [frac(r, "lost") for r in rs], "o-", label=f"{gen}: lost")
-        ax.plot([r["horizon"] for r in rs], [frac(r, "invented") for r in rs], "s--", label=f"{gen}: invented")
-    ax.set_xscale("log", base=2)
-    ax.set_xlabel("horizon (s)")
-    ax.set_ylabel("fraction of the true events")
-    ax.set_title(f"constant spin against free tumbling, elongation {mid}")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    p1 = os.path.join(plots, "spin-model-horizon.png")
-    fig.tight_layout()
-    fig.savefig(p1, dpi=110)
-    # 2: against the elongation, at the full horizon.
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
-    for gen in shapes:
-        rs = [r for r in rows if r["shape"] == gen and r["horizon"] == horizons[-1]]
-        ax.plot([r["elongation"] for r in rs], [frac(r, "lost") for r in rs], "o-", label=f"{gen}: lost")
-        ax.plot([r["elongation"] for r in rs], [frac(r, "invented") for r in rs], "s--", label=f"{gen}: invented")
-    ax.set_xscale("log", base=2)
-    ax.set_xlabel("elongation (largest / smallest half extent)")
-    ax.set_ylabel("fraction of the true events")
-    ax.set_title(f"constant spin against free tumbling, horizon {horizons[-1]:g} s")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    p2 = os.path.join(plots, "spin-model-elongation.png")
-    fig.tight_layout()
-    fig.savefig(p2, dpi=110)
+    p1 = plot(lambda r: r["elongation"] == mid, "horizon", "horizon (s)",
+              f"constant spin against free tumbling, elongation {mid}", "spin-model-horizon.png")
+    p2 = plot(lambda r: r["horizon"] == horizons[-1], "elongation", "elongation (largest / smallest half extent)",
+              f"constant spin against free tumbling, horizon {horizons[-1]:g} s", "spin-model-elongation.png")
     print()
     print(p1)
     print(p2)
