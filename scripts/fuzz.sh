@@ -21,9 +21,16 @@ build=${CCDLAB_FUZZ_BUILD_DIR:-$root/build-fuzz}
 command -v clang++ >/dev/null || "$root/scripts/install-deps.sh" clang libclang-rt-dev
 # CCDLAB_FUZZ_FLAGS: the compiler's optimisation and debug flags (default -O2 -g -DNDEBUG, CMake's;
 # CI uses -O1 -g1 -DNDEBUG, which compiles faster for its short smoke run).
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCCDLAB_FUZZ=ON \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="${CCDLAB_FUZZ_FLAGS:--O2 -g -DNDEBUG}" \
-  -DCCDLAB_BENCHMARKS=OFF -DBUILD_TESTING=OFF >/dev/null
+# CCDLAB_FUZZ_CONFIGURED=1: $build is already configured with -DCCDLAB_FUZZ=ON (e.g. CI's
+# sanitizer build, which builds the tests and the harnesses in one tree); keep its settings.
+if [ "${CCDLAB_FUZZ_CONFIGURED:-0}" = 1 ]; then
+  grep -q '^CCDLAB_FUZZ:BOOL=ON' "$build/CMakeCache.txt" 2>/dev/null ||
+    { echo "fuzz.sh: CCDLAB_FUZZ_CONFIGURED=1 but $build is not configured with -DCCDLAB_FUZZ=ON" >&2; exit 2; }
+else
+  CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCCDLAB_FUZZ=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="${CCDLAB_FUZZ_FLAGS:--O2 -g -DNDEBUG}" \
+    -DCCDLAB_BENCHMARKS=OFF -DBUILD_TESTING=OFF >/dev/null
+fi
 cmake --build "$build" -j"$(nproc)" --target "${targets[@]/#/fuzz_}"
 
 status=0
