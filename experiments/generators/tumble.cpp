@@ -46,9 +46,9 @@ ccd::Scene generate_tumble(const ParameterSet& p) {
                                         "rock"));
   double r_max = 0.0;
   for (const ccd::Shape& s : shapes) r_max = std::max(r_max, s.enclosing_radius());
-  // A square floor with room for about one body per (8 r_max)^2, twice as high as wide.
-  const double side = std::max(8.0, 8.0 * std::ceil(std::sqrt(static_cast<double>(n)))) * r_max;
-  ccd::Scene scene = box_scene(p, ccd::Vec3(side, 2.0 * side, side));
+  // A cube with room for about one body per (4 r_max)^2 of floor.
+  const double side = std::max(8.0, 4.0 * std::ceil(std::sqrt(static_cast<double>(n)))) * r_max;
+  ccd::Scene scene = box_scene(p, ccd::Vec3::Constant(side));
   scene.gravity = ccd::Vec3(0.0, -p.number("gravity"), 0.0);
   scene.shapes = shapes;
   const double y_floor = 0.25 * r_max;
@@ -67,7 +67,8 @@ ccd::Scene generate_tumble(const ParameterSet& p) {
     r.shape = static_cast<std::int32_t>(i % shapes.size());
     b.radius = shapes[i % shapes.size()].enclosing_radius();
     b.position = placement.place(b.radius, [&] {
-      return ccd::Vec3(rng.uniform(b.radius, side - b.radius), rng.uniform(side, 2.0 * side - b.radius),
+      // Above the ramp's top edge (3/4 side), below the ceiling.
+      return ccd::Vec3(rng.uniform(b.radius, side - b.radius), rng.uniform(0.75 * side + b.radius, side - b.radius),
                        rng.uniform(b.radius, side - b.radius));
     });
     b.velocity = rng.in_ball(p.number("speed_max"));

@@ -137,10 +137,11 @@ TEST_CASE("cross-path: spheres in a rigid scene keep the exact truth; the generi
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   World w;
-  w.scene.horizon = 1.0;
+  w.scene.horizon = 2.0;
   w.scene.gravity = Vec3(0, 0, -4);
   w.scene.box = ccd::WallBox{Vec3(0, 0, -4), Vec3(8, 8, 8)};
   w.scene.shapes.push_back(ccd::make_box_shape(Vec3(0.25, 0.125, 0.0625), "crate"));
+  w.scene.scenery.push_back(ccd::test::square_z(0, 0, 0, 8));  // every ball falls through it
   for (int k = 0; k < 8; ++k) w.scene.scenery.push_back(ccd::test::random_polygon(rng, Vec3(1 + 6 * u(rng), 1 + 6 * u(rng), 2 * u(rng)), 1.0));
   for (int i = 0; i < 12; ++i) {
     ccd::Body b;
@@ -171,7 +172,8 @@ TEST_CASE("cross-path: spheres in a rigid scene keep the exact truth; the generi
     for (std::uint32_t j = 0; j < w.scene.scenery.size(); ++j) {
       std::vector<ccd::StaticEvent> ev;
       std::vector<ccd::EventError> er;
-      ccd::body_polygon_bracket_events(*w.rigid, body, w.scene.scenery[j], j, 0.0, 1.0, tol, 1000000, ev, er);
+      ccd::body_polygon_bracket_events(*w.rigid, body, w.scene.scenery[j], j, 0.0, w.scene.horizon, tol, 1000000, ev,
+                                       er);
       std::vector<ccd::StaticEvent> want;
       for (const ccd::StaticEvent& e : exact_spheres)
         if (e.body == body && e.polygon == j && e.exit > e.enter) want.push_back(e);
