@@ -37,7 +37,7 @@ std::string generator_name() {
 
 }  // namespace
 
-TEST_CASE("the registry holds the fourteen generators, each with the common parameters first", "[generators]") {
+TEST_CASE("the registry holds the fifteen generators, each with the common parameters first", "[generators]") {
   std::set<std::string> names;
   for (const ccdlab::Generator& g : ccdlab::generators()) {
     names.insert(std::string(g.name));
@@ -54,7 +54,7 @@ TEST_CASE("the registry holds the fourteen generators, each with the common para
     }
   }
   CHECK(names == std::set<std::string>{"gas", "rain", "bullets", "swarm", "lattice", "mixed", "grazing", "sticks",
-                                       "plates", "crates", "rocks", "floor_ramp", "bowl", "pinball"});
+                                       "plates", "crates", "rocks", "floor_ramp", "bowl", "pinball", "tumble"});
 }
 
 TEST_CASE("every generator is deterministic in its seed", "[generators]") {
