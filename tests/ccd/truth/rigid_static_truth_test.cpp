@@ -95,7 +95,7 @@ TEST_CASE("rigid static truth: constructed cases with hand-worked times", "[trut
   CHECK(r.evaluations > 0);
 }
 
-TEST_CASE("rigid static truth: resting exactly on a polygon is grazing; 1/64 above is no event", "[truth][rigid][scenery]") {
+TEST_CASE("rigid static truth: resting exactly on a polygon is grazing, 1/64 above is no event", "[truth][rigid][scenery]") {
   World w;
   w.scene = ccd::test::resting_scene();
   ccd::RigidTruthOptions o;
@@ -132,7 +132,7 @@ TEST_CASE("rigid static truth: threads and windows do not change the result", "[
   }
 }
 
-TEST_CASE("cross-path: spheres in a rigid scene keep the exact truth; the generic search agrees with it",
+TEST_CASE("cross-path: spheres in a rigid scene keep the exact truth, the generic search agrees with it",
           "[truth][rigid][scenery]") {
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> u(0.0, 1.0);
