@@ -13,6 +13,7 @@
 #include <ccd/util/parallel_for.hpp>
 #include <ccd/util/parameters.hpp>
 #include <ccd/truth/ground_truth.hpp>
+#include <ccd/truth/rigid_static_truth.hpp>
 #include <ccd/truth/rigid_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 
@@ -166,12 +167,23 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   }
   const TruthIndex truth(std::move(truth_events));
   // Body-static events: the stored truth's, else computed (empty without scenery).
+  // Rigid bodies' static events are certified brackets: their errors widen the matching
+  // window as the body-body ones do.
   std::vector<ccd::StaticEvent> static_events;
   if (!scene.scenery.empty()) {
-    if (options.truth && options.truth->has_scenery)
+    if (options.truth && options.truth->has_scenery) {
       static_events = options.truth->static_events;
-    else
+      for (const ccd::EventError& x : options.truth->static_errors)
+        truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+    } else if (rigid) {
+      ccd::RigidTruthOptions ropts;
+      ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
+      ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(*rigid, scene.scenery, ropts);
+      for (const ccd::EventError& x : r.errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+      static_events = std::move(r.events);
+    } else {
       static_events = ccd::compute_static_truth(traj, scene.scenery, static_cast<unsigned>(std::max(0, options.threads)));
+    }
   }
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;

@@ -45,6 +45,15 @@ struct BodyStep {
   double radius = 0.0;                       ///< enclosing radius
   double reach = 0.0;                        ///< max |core point| (rounded up)
 
+  /// A convex shape at rest with the identity pose at the origin (a static polygon).
+  explicit BodyStep(const ConvexProxy& fixed) : proxy(fixed) {
+    double rho2 = 0.0;
+    for (const Vec3& q : proxy.points) rho2 = std::max(rho2, q.squaredNorm());
+    rho = std::sqrt(rho2);
+    reach = rho * (1.0 + 4.0 * std::numeric_limits<double>::epsilon());
+    radius = reach + proxy.radius;
+  }
+
   BodyStep(const RigidMotion& motion, std::uint32_t b, double t0, double t1) : m(&motion), body(b), proxy(motion.proxy(b)) {
     radius = motion.enclosing_radius(b);
     for (const Piece& q : motion.centres().pieces(b))
@@ -80,6 +89,7 @@ struct BodyStep {
 
   Pose pose(double t) const {
     Pose p;
+    if (!m) return p;  // at rest
     p.centre = piece ? piece->position(t) : m->centres().position(body, t);
     if (!turning) {
       p.rotation = still;
@@ -97,7 +107,7 @@ struct BodyStep {
   /// Bound on the distance between the evaluated and the exact position of any point at t
   /// (metres): the orientation's evaluation error (free spin) times the reach.
   double pose_error(double t) const {
-    return spin || !turning ? 0.0 : m->rotations().orientation_error(body, t) * (reach + proxy.radius);
+    return !m || spin || !turning ? 0.0 : m->rotations().orientation_error(body, t) * (reach + proxy.radius);
   }
 
   /// The spin over the step (zero when not turning); only with `spin` or not `turning`.
@@ -105,6 +115,7 @@ struct BodyStep {
 
   // max |v| of the centre over [u0, u1] (|v| is convex and v linear on each piece).
   double max_speed(double u0, double u1) const {
+    if (!m) return 0.0;
     if (piece && piece->a.isZero(0.0)) return piece->v.norm();
     double x = 0.0;
     for (const Piece& q : m->centres().pieces(body)) {
@@ -123,6 +134,7 @@ struct BodyStep {
       hi = std::max(hi, x);
       scale += v.cwiseAbs().sum();
     };
+    if (!m) return use(Vec3::Zero());
     if (piece && piece->a.isZero(0.0)) return use(piece->v);
     for (const Piece& q : m->centres().pieces(body)) {
       if (q.t1 < u0 || q.t0 > u1) continue;
@@ -233,13 +245,15 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
   return conservative_advancement(in, a, b, AdvancementOptions{});
 }
 
-ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, std::uint32_t b,
-                                       const AdvancementOptions& options, int* iterations) {
-  const RigidMotion& m = *in.rigid;
+namespace {
+
+// The advancement of sa against sb over the step (see the header); mu bounds the pair's
+// point speeds over the step.
+ContactResult advance_pair(const NarrowInput& in, const BodyStep& sa, const BodyStep& sb, double mu,
+                           const AdvancementOptions& options, int* iterations) {
   const double inf = std::numeric_limits<double>::infinity();
   const double tol = options.tolerance;
   ContactResult r;
-  const BodyStep sa(m, a, in.t0, in.t1), sb(m, b, in.t0, in.t1);
   Pose pa = sa.pose(in.t0), pb = sb.pose(in.t0);
   DistanceOptions dopt;
   dopt.tolerance = 0.25 * tol;
@@ -256,7 +270,6 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
     r.signed_distance = d.upper;
     return r;
   }
-  const double mu = m.max_point_speed(a, in.t0, in.t1) + m.max_point_speed(b, in.t0, in.t1);
   double t = in.t0;
   for (int it = 1;; ++it) {
     if (iterations) *iterations = it;
@@ -313,6 +326,23 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
   }
   r.toi_error = hi - t;
   return r;
+}
+
+}  // namespace
+
+ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, std::uint32_t b,
+                                       const AdvancementOptions& options, int* iterations) {
+  const RigidMotion& m = *in.rigid;
+  const BodyStep sa(m, a, in.t0, in.t1), sb(m, b, in.t0, in.t1);
+  const double mu = m.max_point_speed(a, in.t0, in.t1) + m.max_point_speed(b, in.t0, in.t1);
+  return advance_pair(in, sa, sb, mu, options, iterations);
+}
+
+ContactResult conservative_advancement_fixed(const NarrowInput& in, std::uint32_t body, const ConvexProxy& fixed,
+                                             const AdvancementOptions& options, int* iterations) {
+  const RigidMotion& m = *in.rigid;
+  const BodyStep sa(m, body, in.t0, in.t1), sb(fixed);
+  return advance_pair(in, sa, sb, m.max_point_speed(body, in.t0, in.t1), options, iterations);
 }
 
 }  // namespace ccd

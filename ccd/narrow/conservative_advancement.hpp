@@ -32,6 +32,7 @@
 // convex_distance.
 #include <ccd/narrow/contact_result.hpp>
 #include <ccd/narrow/narrow_query.hpp>
+#include <ccd/shape/convex_proxy.hpp>
 
 #include <cstdint>
 
@@ -48,5 +49,11 @@ struct AdvancementOptions {
 ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, std::uint32_t b);
 ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, std::uint32_t b,
                                        const AdvancementOptions& options, int* iterations = nullptr);
+
+/// The same for `body` against a convex shape at rest with the identity pose at the origin
+/// (a static polygon: polygon_proxy, ccd/scene/scenery.hpp): B's velocity and
+/// spin are zero, mu = max_point_speed(body).
+ContactResult conservative_advancement_fixed(const NarrowInput& in, std::uint32_t body, const ConvexProxy& fixed,
+                                             const AdvancementOptions& options = {}, int* iterations = nullptr);
 
 }  // namespace ccd

@@ -6,7 +6,9 @@
 // bound's assumption, as a ray's entry distance into an object's bounding volume is a
 // lower bound on its hit distance); each is solved exactly; once a contact at time T is
 // certain, every candidate whose earliest possible contact is later than T is skipped (it
-// cannot be touched before T). The skipped candidates are the polygon tests saved.
+// cannot be touched before T). The skipped candidates are the polygon tests saved. For a
+// certified (not exact) solver, the contact is certain at toi + toi_error, the far end of
+// its bracket: T is that, and a near miss with an infinite error never skips anything.
 //
 // Guarantee: the body's first contact in the step (the least toi over all candidates) is
 // the same with and without skipping, for every conservative bound: a skipped candidate's
@@ -41,7 +43,9 @@ std::size_t kinematic_visit(std::span<StaticCandidate> candidates, Solve&& solve
     const ContactResult c = solve(candidates[i].polygon);
     if (c.found()) {
       found(candidates[i].polygon, c);
-      first = std::min(first, c.toi);
+      // Certain by toi + toi_error (the bracket's far end; toi for an exact solver, never
+      // for a near miss reported with an infinite error).
+      first = std::min(first, c.toi + c.toi_error);
     }
   }
   return 0;

@@ -1,4 +1,4 @@
-#include <ccd/narrow/sphere_polygon_narrow.hpp>
+#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
 #include <algorithm>
@@ -126,7 +126,7 @@ void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, Ste
 
   watch.start();
   auto solve = [&](std::uint32_t body, std::uint32_t polygon) {
-    return sphere_polygon_narrow(in, body, scenery_[polygon]);
+    return body_polygon_narrow(in, body, scenery_[polygon]);
   };
   if (!options_.kinematic) {
     for (const StaticPair& p : out.static_passed) {

@@ -21,13 +21,15 @@
 // ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
 //  5. static_index.find_pairs(boxes) -> `static_candidates` (body, polygon), by body;
 //  6. bound.test_static for each -> `static_passed` with `static_earliest`;
-//  7. the exact sphere-polygon narrow phase (ccd/narrow/sphere_polygon_narrow.hpp) for each
-//     passed pair -> `static_contacts`. With PipelineOptions::kinematic the passed pairs of
+//  7. the narrow phase of a body against a polygon (ccd/narrow/body_polygon_narrow.hpp:
+//     exact for spheres, conservative advancement for other shapes) for each passed pair
+//     -> `static_contacts`. With PipelineOptions::kinematic the passed pairs of
 //     each body are visited by kinematic_visit (ccd/pipeline/kinematic_order.hpp): in order
 //     of `earliest`, skipping those that cannot be touched before the body's first certain
 //     contact; `static_tests_saved` counts the skipped ones. The stages' times add to the
-//     broad, bound and narrow times. Rigid bodies meet the scenery as their enclosing
-//     spheres (conservative, not exact). Periodic scenes run no static stages.
+//     broad, bound and narrow times. Bounds see a rigid body as its enclosing sphere
+//     (or their own oriented volume); the narrow phase sees its shape. Periodic scenes run
+//     no static stages.
 // Periodic scenes (`motion.periodic()`): the same stages over the bodies and their images
 // (ccd/pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
 // image), each candidate image pair tested and solved with its shift, and reported as the

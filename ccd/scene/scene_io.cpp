@@ -102,8 +102,8 @@ json shape_to_json(const Shape& s) {
 namespace {
 
 // The scenery of a scene (docs/scenery.md): every polygon (and mesh triangle) a valid
-// static polygon, within the magnitude limit, and scenery only with spheres in a
-// reflecting box (wrap-around and non-sphere shapes against scenery are not supported).
+// static polygon, within the magnitude limit, and scenery only in a box that does not wrap
+// around (wrap-around against scenery is not supported). Every shape may meet scenery.
 template <class Magnitude>
 void validate_scenery(const Scene& s, const Reader& r, Magnitude&& magnitude) {
   if (s.scenery.empty() && !s.scenery_mesh) return;
@@ -126,8 +126,6 @@ void validate_scenery(const Scene& s, const Reader& r, Magnitude&& magnitude) {
   }
   if (s.box && s.box->any_wrap())
     r.fail("scenery", "static scenery in a box that wraps around (box.boundary) is not supported");
-  if (s.has_non_spheres())
-    r.fail("scenery", "static scenery with non-sphere shapes is not supported (plain and spinning spheres only)");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 // (docs/scenery.md); scene_io validates them (planar within a tolerance, convex, no
 // repeated or collinear vertices) and fills the derived plane.
 #include <ccd/geometry/vec3.hpp>
+#include <ccd/shape/convex_proxy.hpp>
 
 #include <array>
 #include <cstddef>
@@ -25,6 +26,11 @@ struct StaticPolygon {
   /// The plane is { x : normal . x == offset }.
   double offset = 0.0;
 };
+
+/// The polygon as a convex shape at rest for the rigid-body solvers (convex_distance,
+/// conservative advancement): its vertices as they are (the polygon must outlive the
+/// proxy), radius 0, posed with the identity at the origin.
+inline ConvexProxy polygon_proxy(const StaticPolygon& polygon) { return ConvexProxy{polygon.vertices, 0.0}; }
 
 /// Many triangles at once (the scene field `scenery_mesh`): shared vertices and index
 /// triples. The reader appends one StaticPolygon per triangle to Scene::scenery, after the

@@ -1,6 +1,7 @@
 #include <ccd/truth/rigid_truth.hpp>
 
 #include <ccd/queries/convex_distance.hpp>
+#include <ccd/truth/bracket_search.hpp>
 #include <ccd/truth/pair_contact.hpp>
 #include <ccd/util/parallel_for.hpp>
 
@@ -14,98 +15,23 @@
 namespace ccd {
 namespace {
 
-// Near: certified separated, but by no more than the distance band (see the header).
-enum class Label : std::uint8_t { Separated, Near, Overlapping, Unresolved };
-
-struct LabelledPiece {
-  double lo, hi;
-  Label label;
-};
-
-class BracketSearch {
- public:
-  /// `qa`, `qb`: when given, the centres' paths (pieces that cover the searched interval;
-  /// b's may be a periodic image); else the trajectories'.
-  BracketSearch(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double lipschitz, double tol,
-                std::size_t max_evaluations, const Piece* qa = nullptr, const Piece* qb = nullptr)
-      : m_(m), a_(a), b_(b), L_(lipschitz), tol_(tol), max_(max_evaluations),
-        band_(std::max(lipschitz * tol, 1e-12 * (m.enclosing_radius(a) + m.enclosing_radius(b)))), qa_(qa), qb_(qb) {}
-
-  void run(double lo, double hi) { search(lo, hi); }
-  std::vector<LabelledPiece>& pieces() { return pieces_; }
-  std::size_t evaluations() const { return evaluations_; }
-
- private:
-  void push(double lo, double hi, Label l) {
-    if (!pieces_.empty() && pieces_.back().label == l && pieces_.back().hi >= lo)
-      pieces_.back().hi = std::max(pieces_.back().hi, hi);
-    else
-      pieces_.push_back({lo, hi, l});
-  }
-
-  ConvexDistance distance(double t) {
-    ++evaluations_;
-    Pose pa = m_.pose(a_, t), pb = m_.pose(b_, t);
-    if (qa_) pa.centre = qa_->position(t);
-    if (qb_) pb.centre = qb_->position(t);
-    DistanceOptions o;
-    // Resolve the distance to a fraction of what the time tolerance moves the bodies.
-    o.tolerance = std::max(0.25 * L_ * tol_, 1e-15);
-    return convex_distance(m_.proxy(a_), {pa.centre, pa.rotation}, m_.proxy(b_), {pb.centre, pb.rotation}, o);
-  }
-
-  // Labels [lo, hi] (closed) in increasing time.
-  void search(double lo, double hi) {
-    if (evaluations_ >= max_) {
-      push(lo, hi, Label::Unresolved);
-      return;
-    }
-    const double mid = lo + 0.5 * (hi - lo);
-    if (!(mid > lo && mid < hi)) {  // an interval of an ulp or two: nothing left to split
-      push(lo, hi, Label::Unresolved);
-      return;
-    }
-    const ConvexDistance d = distance(mid);
-    const double inf = std::numeric_limits<double>::infinity();
+// The bracket search of a and b over pieces of the centres' paths: `qa`, `qb` when given
+// (pieces that cover the searched interval; b's may be a periodic image), else the
+// trajectories'.
+BracketSearch pair_search(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double lipschitz, double tol,
+                          std::size_t max_evaluations, const Piece* qa = nullptr, const Piece* qb = nullptr) {
+  const double band = std::max(lipschitz * tol, 1e-12 * (m.enclosing_radius(a) + m.enclosing_radius(b)));
+  auto probe = [&m, a, b, qa, qb](double t, const DistanceOptions& o) {
+    Pose pa = m.pose(a, t), pb = m.pose(b, t);
+    if (qa) pa.centre = qa->position(t);
+    if (qb) pb.centre = qb->position(t);
     // The poses' evaluation error (free spin; 0 otherwise) moves every point by at most
-    // `slack`: the distance of the exact poses is within it of the evaluated one.
-    const double slack = m_.pose_error(a_, mid) + m_.pose_error(b_, mid);
-    Label sure = Label::Unresolved;
-    double reach = 0.0;
-    if (d.status == ConvexDistance::Status::Separated && (slack == 0.0 || d.lower - slack > 0.0)) {
-      sure = d.lower - slack > band_ ? Label::Separated : Label::Near;
-      reach = L_ > 0.0 ? (d.lower - slack) / L_ : inf;
-    } else if (d.status == ConvexDistance::Status::Overlapping && (slack == 0.0 || d.upper + slack < 0.0)) {
-      sure = Label::Overlapping;
-      reach = L_ > 0.0 ? -(d.upper + slack) / L_ : inf;
-    }
-    if (sure == Label::Unresolved) {
-      if (hi - lo <= tol_) {
-        push(lo, hi, Label::Unresolved);
-        return;
-      }
-      search(lo, mid);
-      search(mid, hi);
-      return;
-    }
-    // Certified on the open interval (mid - reach, mid + reach); its ends belong to the
-    // neighbouring closed sub-searches.
-    const double x0 = mid - reach, x1 = mid + reach;
-    if (x0 > lo) search(lo, x0);
-    push(std::max(lo, x0), std::min(hi, x1), sure);
-    if (x1 < hi) search(x1, hi);
-  }
-
-  const RigidMotion& m_;
-  std::uint32_t a_, b_;
-  double L_, tol_;
-  std::size_t max_;
-  double band_;  ///< metres: separations up to this do not split an event
-  const Piece* qa_;
-  const Piece* qb_;
-  std::size_t evaluations_ = 0;
-  std::vector<LabelledPiece> pieces_;
-};
+    // the slack: the distance of the exact poses is within it of the evaluated one.
+    return BracketProbe{convex_distance(m.proxy(a), {pa.centre, pa.rotation}, m.proxy(b), {pb.centre, pb.rotation}, o),
+                        m.pose_error(a, t) + m.pose_error(b, t)};
+  };
+  return BracketSearch(probe, lipschitz, tol, band, max_evaluations);
+}
 
 std::size_t auto_windows(const RigidMotion& m) {
   const Trajectories& traj = m.centres();
@@ -128,54 +54,15 @@ struct Candidate {
 
 namespace {
 
-// The events of one finished search (see the header), appended to events and errors.
-void search_events(BracketSearch& search, std::uint32_t a, std::uint32_t b, double horizon, double tol,
+// The events of one finished search (ccd/truth/bracket_search.hpp), appended to events
+// and errors as events of the pair (a, b).
+void search_events(BracketSearch& search, std::uint32_t a, std::uint32_t b, double horizon,
                    std::vector<ContactEvent>& events, std::vector<EventError>& errors) {
-  auto& ps = search.pieces();
-  // A certified gap narrower than the time tolerance between two uncertified runs does not
-  // split an event (the search resolves crossings to about an ulp, leaving slivers).
-  for (std::size_t i = 1; i + 1 < ps.size(); ++i)
-    if (ps[i].label == Label::Separated && ps[i].hi - ps[i].lo <= tol && ps[i - 1].label != Label::Separated &&
-        ps[i + 1].label != Label::Separated)
-      ps[i].label = Label::Unresolved;
-  for (std::size_t i = 0; i < ps.size();) {
-    if (ps[i].label == Label::Separated) {
-      ++i;
-      continue;
-    }
-    std::size_t k = i;
-    const LabelledPiece* first_o = nullptr;
-    const LabelledPiece* last_o = nullptr;
-    for (; k < ps.size() && ps[k].label != Label::Separated; ++k)
-      if (ps[k].label == Label::Overlapping) {
-        if (!first_o) first_o = &ps[k];
-        last_o = &ps[k];
-      }
-    const double r0 = ps[i].lo, r1 = ps[k - 1].hi;
-    ContactEvent ev{a, b, 0.0, 0.0};
-    EventError err;
-    if (first_o) {
-      // enter in [r0, first_o->lo]; exit in [last_o->hi, r1].
-      if (ps[i].label == Label::Overlapping && r0 == 0.0) {
-        ev.enter = 0.0;
-      } else {
-        ev.enter = r0 + 0.5 * (first_o->lo - r0);
-        err.enter_error = std::max(ev.enter - r0, first_o->lo - ev.enter);
-      }
-      if (ps[k - 1].label == Label::Overlapping && r1 == horizon) {
-        ev.exit = horizon;
-      } else {
-        ev.exit = last_o->hi + 0.5 * (r1 - last_o->hi);
-        err.exit_error = std::max(ev.exit - last_o->hi, r1 - ev.exit);
-      }
-    } else {
-      ev.enter = ev.exit = r0 + 0.5 * (r1 - r0);
-      err.enter_error = err.exit_error = std::max(ev.enter - r0, r1 - ev.enter);
-      err.grazing = true;
-    }
-    events.push_back(ev);
-    errors.push_back(err);
-    i = k;
+  std::vector<BracketEvent> found;
+  search.events(horizon, found);
+  for (const BracketEvent& e : found) {
+    events.push_back({a, b, e.enter, e.exit});
+    errors.push_back(e.error);
   }
 }
 
@@ -239,9 +126,9 @@ std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint
                                 std::vector<EventError>& errors) {
   const double horizon = m.centres().horizon();
   const double lipschitz = m.max_point_speed(a, u0, u1) + m.max_point_speed(b, u0, u1);
-  BracketSearch search(m, a, b, lipschitz, tol, max_evaluations);
+  BracketSearch search = pair_search(m, a, b, lipschitz, tol, max_evaluations);
   search.run(u0, u1);
-  search_events(search, a, b, horizon, tol, events, errors);
+  search_events(search, a, b, horizon, events, errors);
   return search.evaluations();
 }
 
@@ -290,11 +177,11 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, 
             Piece image = qb;
             PieceLow low = lb[ib];
             shift_piece(image, low, image_offset(box, s));
-            BracketSearch search(m, a, b, lipschitz, tol, max_evaluations - std::min(max_evaluations, evaluations),
-                                 &qa, &image);
+            BracketSearch search = pair_search(m, a, b, lipschitz, tol,
+                                               max_evaluations - std::min(max_evaluations, evaluations), &qa, &image);
             search.run(c0, c1);
             evaluations += search.evaluations();
-            search_events(search, a, b, horizon, tol, found, found_errors);
+            search_events(search, a, b, horizon, found, found_errors);
           }
     }
     if (qa.t1 < qb.t1) {
@@ -310,12 +197,16 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, 
   return evaluations;
 }
 
+std::size_t rigid_truth_windows(const RigidMotion& m, const RigidTruthOptions& options) {
+  return options.windows ? options.windows : auto_windows(m);
+}
+
 RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptions& options) {
   RigidTruthResult out;
   const Trajectories& traj = m.centres();
   const double T = traj.horizon();
   const double tol = options.time_tolerance > 0.0 ? options.time_tolerance : std::ldexp(T, -30);
-  const std::size_t W = options.windows ? options.windows : auto_windows(m);
+  const std::size_t W = rigid_truth_windows(m, options);
   const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
   out.stats.windows = W;
   out.stats.threads = threads;

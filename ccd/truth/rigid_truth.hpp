@@ -86,6 +86,10 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& motion, std::uint32_
                                          double u1, double time_tolerance, std::size_t max_evaluations,
                                          std::vector<ContactEvent>& events, std::vector<EventError>& errors);
 
+/// The number of windows the rigid truths cut the horizon into: options.windows, or when 0
+/// the automatic count (see RigidTruthOptions::windows).
+std::size_t rigid_truth_windows(const RigidMotion& motion, const RigidTruthOptions& options);
+
 RigidTruthResult compute_rigid_truth(const RigidMotion& motion, const RigidTruthOptions& options = {});
 
 /// The bracket search of one pair on [u0, u1] (see the header comment); appends events

@@ -13,8 +13,10 @@
 // whatever window it is asked about.
 //
 // Polygon indices are those of Scene::scenery (polygons, then mesh triangles). Units:
-// seconds. Touching contacts have enter == exit. Scenes that wrap around or hold
-// non-sphere shapes are refused by the scene reader when they have scenery.
+// seconds. Touching contacts have enter == exit. Scenes that wrap around are refused by
+// the scene reader when they have scenery. Rigid bodies of other shapes take the certified
+// search of ccd/truth/rigid_static_truth.hpp; this file solves their enclosing spheres.
+#include <ccd/geometry/aabb.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/queries/contact_interval.hpp>
 #include <ccd/scene/scenery.hpp>
@@ -41,6 +43,12 @@ bool static_event_order(const StaticEvent& x, const StaticEvent& y);
 /// (entries already in `out` are left alone).
 void body_polygon_intervals(const Trajectories& traj, std::uint32_t body, const StaticPolygon& poly, double u0,
                             double u1, std::vector<ContactInterval>& out);
+
+/// The static events of one body over [0, horizon] against every polygon (boxes[j] =
+/// polygon_box(scenery[j]), ccd/broad_phase/static_index.hpp), appended in polygon order
+/// (unsorted across polygons). compute_static_truth is this per body, then sorted.
+void append_body_static_events(const Trajectories& traj, std::uint32_t body, std::span<const StaticPolygon> scenery,
+                               std::span<const Aabb> boxes, std::vector<StaticEvent>& out);
 
 /// Every static event of the scene over [0, horizon], sorted by static_event_order.
 /// threads 0: one per hardware core; the result does not depend on it.

@@ -13,20 +13,35 @@ namespace {
 
 using nlohmann::json;
 
+// The error fields of one event, as for body-body events (absent when zero).
+void add_error_fields(json& j, const EventError& err) {
+  if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
+  if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
+  if (err.grazing) j["grazing"] = true;
+}
+
 json event_json(const TruthFile& t, std::size_t i) {
   const ContactEvent& e = t.events[i];
   json j = {{"a", e.a}, {"b", e.b}, {"enter", e.enter}, {"exit", e.exit}};
-  if (!t.errors.empty()) {
-    const EventError& err = t.errors[i];
-    if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
-    if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
-    if (err.grazing) j["grazing"] = true;
-  }
+  if (!t.errors.empty()) add_error_fields(j, t.errors[i]);
   return j;
 }
 
-json static_event_json(const StaticEvent& e) {
-  return {{"body", e.body}, {"polygon", e.polygon}, {"enter", e.enter}, {"exit", e.exit}};
+json static_event_json(const TruthFile& t, std::size_t i) {
+  const StaticEvent& e = t.static_events[i];
+  json j = {{"body", e.body}, {"polygon", e.polygon}, {"enter", e.enter}, {"exit", e.exit}};
+  if (!t.static_errors.empty()) add_error_fields(j, t.static_errors[i]);
+  return j;
+}
+
+EventError read_error_fields(const JsonReader& r, const json& e, const std::string& p) {
+  EventError err;
+  err.enter_error = r.optional_number(e, "enter_error", p, 0.0);
+  err.exit_error = r.optional_number(e, "exit_error", p, 0.0);
+  if (err.enter_error < 0.0) r.fail(p + ".enter_error", "must be >= 0");
+  if (err.exit_error < 0.0) r.fail(p + ".exit_error", "must be >= 0");
+  err.grazing = r.optional_bool(e, "grazing", p, false);
+  return err;
 }
 
 bool is_digest(const std::string& s) {
@@ -45,7 +60,7 @@ json truth_to_json(const TruthFile& t) {
             {"events", std::move(events)}};
   if (t.has_scenery) {
     json st = json::array();
-    for (const StaticEvent& e : t.static_events) st.push_back(static_event_json(e));
+    for (std::size_t i = 0; i < t.static_events.size(); ++i) st.push_back(static_event_json(t, i));
     j["static_events"] = std::move(st);
   }
   return j;
@@ -67,7 +82,7 @@ std::string truth_to_text(const TruthFile& t) {
     s += ",\n \"static_events\": [";
     for (std::size_t i = 0; i < t.static_events.size(); ++i) {
       s += i == 0 ? "\n  " : ",\n  ";
-      s += static_event_json(t.static_events[i]).dump();
+      s += static_event_json(t, i).dump();
     }
     s += t.static_events.empty() ? "]" : "\n ]";
   }
@@ -113,14 +128,7 @@ TruthFile truth_from_json(const json& j, const std::string& file) {
     if (!t.events.empty() && !event_order(t.events.back(), ev))
       r.fail(p, "events must be sorted by (enter, a, b) without duplicates");
     t.events.push_back(ev);
-    EventError err;
-    if (t.version == 2) {
-      err.enter_error = r.optional_number(e, "enter_error", p, 0.0);
-      err.exit_error = r.optional_number(e, "exit_error", p, 0.0);
-      if (err.enter_error < 0.0) r.fail(p + ".enter_error", "must be >= 0");
-      if (err.exit_error < 0.0) r.fail(p + ".exit_error", "must be >= 0");
-      err.grazing = r.optional_bool(e, "grazing", p, false);
-    }
+    const EventError err = t.version == 2 ? read_error_fields(r, e, p) : EventError{};
     any_error = any_error || err != EventError{};
     errors.push_back(err);
   }
@@ -130,6 +138,8 @@ TruthFile truth_from_json(const json& j, const std::string& file) {
     if (!st.is_array()) r.fail("static_events", "must be an array");
     t.has_scenery = true;
     t.static_events.reserve(st.size());
+    std::vector<EventError> static_errors;
+    bool any_static_error = false;
     for (std::size_t i = 0; i < st.size(); ++i) {
       const std::string p = "static_events[" + std::to_string(i) + "]";
       const json& e = st[i];
@@ -144,7 +154,11 @@ TruthFile truth_from_json(const json& j, const std::string& file) {
       if (!t.static_events.empty() && !static_event_order(t.static_events.back(), ev))
         r.fail(p, "static events must be sorted by (enter, body, polygon) without duplicates");
       t.static_events.push_back(ev);
+      const EventError err = read_error_fields(r, e, p);
+      any_static_error = any_static_error || err != EventError{};
+      static_errors.push_back(err);
     }
+    if (any_static_error) t.static_errors = std::move(static_errors);
   }
   return t;
 }

@@ -16,7 +16,9 @@
 //   "static_events": [{"body": i, "polygon": j, "enter": t0, "exit": t1}, ...]
 // (polygon = index in the scene's scenery, mesh triangles after the polygons), sorted by
 // (enter, body, polygon); the field is absent for a scene without scenery, so such
-// truth files are unchanged.
+// truth files are unchanged. A static event of a rigid body (certified, not exact) may
+// carry `enter_error`, `exit_error` and `grazing` as body-body events do
+// (TruthFile::static_errors).
 // Times are written with 17 significant digits, so a file round-trips bit for bit.
 // Validation on reading: malformed JSON, a missing or mistyped field, a non-finite
 // number, horizon <= 0, a digest that is not 64 lowercase hex digits, a or b not a
@@ -52,6 +54,8 @@ struct TruthFile {
   bool has_scenery = false;
   /// Body-scenery events, sorted by (enter, body, polygon); empty without scenery.
   std::vector<StaticEvent> static_events;
+  /// One entry per static event, or empty when every static event is exact (spheres).
+  std::vector<EventError> static_errors;
   int version = 2;  ///< the format version read (written files are version 2)
 };
 

@@ -10,6 +10,7 @@
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>
+#include <ccd/truth/rigid_static_truth.hpp>
 #include <ccd/truth/rigid_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -131,11 +132,25 @@ int run_truth(std::span<const std::string> args) {
       result = ccd::compute_truth_detailed(traj, options);
     }
     // Static scenery (docs/scenery.md): exact body-polygon events.
+    // Rigid bodies of other shapes: certified brackets, as their body-body events.
     std::vector<ccd::StaticEvent> static_events;
+    std::vector<ccd::EventError> static_errors;
+    std::size_t static_grazing = 0;
     if (!scene.scenery.empty()) {
       doing = "computing the static events of " + std::to_string(scene.bodies.size()) + " bodies against " +
               std::to_string(scene.scenery.size()) + " polygons";
-      static_events = ccd::compute_static_truth(traj, scene.scenery, options.threads);
+      if (scene.has_non_spheres()) {
+        const ccd::RigidMotion motion(scene, traj);
+        ccd::RigidTruthOptions ropts;
+        ropts.threads = options.threads;
+        ropts.windows = options.windows;
+        ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(motion, scene.scenery, ropts);
+        static_events = std::move(r.events);
+        static_errors = std::move(r.errors);
+        static_grazing = r.grazing;
+      } else {
+        static_events = ccd::compute_static_truth(traj, scene.scenery, options.threads);
+      }
     }
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
@@ -149,6 +164,9 @@ int run_truth(std::span<const std::string> args) {
         file.errors = errors;
       file.has_scenery = !scene.scenery.empty();
       file.static_events = static_events;
+      if (std::any_of(static_errors.begin(), static_errors.end(),
+                      [](const ccd::EventError& x) { return x != ccd::EventError{}; }))
+        file.static_errors = static_errors;
       output->commit(ccd::truth_to_text(file));
     }
     if (quiet || out_path == "-") return 0;
@@ -166,7 +184,9 @@ int run_truth(std::span<const std::string> args) {
     if (!scene.scenery.empty()) {
       std::size_t static_tangent = 0;
       for (const ccd::StaticEvent& e : static_events) static_tangent += e.enter == e.exit;
-      std::cout << "static       " << static_events.size() << " events (" << static_tangent << " tangent) against "
+      std::cout << "static       " << static_events.size() << " events (" << static_tangent << " tangent"
+                << (scene.has_non_spheres() ? ", " + std::to_string(static_grazing) + " grazing" : std::string())
+                << ") against "
                 << scene.scenery.size() << " polygons\n";
     }
     char time_text[160];

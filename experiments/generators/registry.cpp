@@ -24,12 +24,13 @@ extern const Generator kRocksGenerator;
 extern const Generator kFloorRampGenerator;
 extern const Generator kBowlGenerator;
 extern const Generator kPinballGenerator;
+extern const Generator kTumbleGenerator;
 
 std::span<const Generator> generators() {
   static const Generator table[] = {kGasGenerator,     kRainGenerator,    kBulletsGenerator, kSwarmGenerator,
                                     kLatticeGenerator, kMixedGenerator,   kGrazingGenerator, kSticksGenerator,
                                     kPlatesGenerator,  kCratesGenerator,  kRocksGenerator,  kFloorRampGenerator,
-                                    kBowlGenerator,    kPinballGenerator};
+                                    kBowlGenerator,    kPinballGenerator, kTumbleGenerator};
   return table;
 }
 

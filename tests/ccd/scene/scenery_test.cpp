@@ -127,11 +127,26 @@ TEST_CASE("scenery: bad meshes, versions and unsupported combinations", "[scene]
   j = scene_with_scenery();
   j["box"]["boundary"] = {"wrap", "reflect", "reflect"};
   CHECK(error_of(j).rfind("s.json: scenery: static scenery in a box that wraps around", 0) == 0);
+}
+
+TEST_CASE("scenery with rigid bodies: accepted, and still validated", "[scene][scenery][rigid]") {
+  json j = scene_with_scenery();
+  j["shapes"] = json::parse(R"([{"name": "b", "kind": "box", "half_extents": [0.25, 0.25, 0.25]}])");
+  j["bodies"][0].erase("radius");
+  j["bodies"][0]["shape"] = "b";
+  const ccd::Scene s = ccd::scene_from_json(j, "s.json");
+  CHECK(s.has_non_spheres());
+  CHECK_FALSE(s.scenery.empty());
+  // A bad polygon is still refused with its index, next to a rigid body.
+  j["scenery"][0]["polygon"][2] = j["scenery"][0]["polygon"][0];
+  CHECK(error_of(j).rfind("s.json: scenery[0].polygon", 0) == 0);
+  // Wrap-around stays refused with rigid bodies too.
   j = scene_with_scenery();
   j["shapes"] = json::parse(R"([{"name": "b", "kind": "box", "half_extents": [0.25, 0.25, 0.25]}])");
   j["bodies"][0].erase("radius");
   j["bodies"][0]["shape"] = "b";
-  CHECK(error_of(j).rfind("s.json: scenery: static scenery with non-sphere shapes is not supported", 0) == 0);
+  j["box"]["boundary"] = {"wrap", "reflect", "reflect"};
+  CHECK(error_of(j).rfind("s.json: scenery: static scenery in a box that wraps around", 0) == 0);
 }
 
 TEST_CASE("polygon_from_vertices and polygon_defect", "[scene][scenery]") {

@@ -172,3 +172,26 @@ TEST_CASE("truth files carry static events only for scenes with scenery", "[trut
   j["static_events"] = 3;
   CHECK(error_of(j).find("static_events") != std::string::npos);
 }
+
+TEST_CASE("static events of rigid bodies carry their certified errors", "[truth][io][scenery][rigid]") {
+  TruthFile t = sample();
+  t.has_scenery = true;
+  t.static_events = {{2, 0, 0.0, 0.1 + 0.2}, {0, 5, 1.0 / 3.0, 1.0 / 3.0}, {1, 5, 1.0 / 3.0, 2.0}};
+  // All exact (spheres): no error field is written.
+  t.static_errors = {{}, {}, {}};
+  CHECK(ccd::truth_to_text(t).find("error") == std::string::npos);
+  t.static_errors = {{0.0, 0.125, false}, {0.25, 0.25, true}, {}};
+  const std::string text = ccd::truth_to_text(t);
+  const TruthFile back = ccd::truth_from_json(json::parse(text), "t.json");
+  CHECK(back.static_events == t.static_events);
+  CHECK(back.static_errors == t.static_errors);
+  CHECK(back.errors.empty());  // the body-body events stay exact
+  const TruthFile back2 = ccd::truth_from_json(ccd::truth_to_json(t), "t.json");
+  CHECK(back2.static_errors == t.static_errors);
+  json j = ccd::truth_to_json(t);
+  j["static_events"][0]["exit_error"] = -1.0;
+  CHECK(error_of(j).find("static_events[0].exit_error: must be >= 0") != std::string::npos);
+  j = ccd::truth_to_json(t);
+  j["static_events"][1]["grazing"] = 1;
+  CHECK(error_of(j).find("static_events[1].grazing") != std::string::npos);
+}

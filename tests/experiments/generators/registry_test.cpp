@@ -37,7 +37,7 @@ std::string generator_name() {
 
 }  // namespace
 
-TEST_CASE("the registry holds the fourteen generators, each with the common parameters first", "[generators]") {
+TEST_CASE("the registry holds the fifteen generators, each with the common parameters first", "[generators]") {
   std::set<std::string> names;
   for (const ccdlab::Generator& g : ccdlab::generators()) {
     names.insert(std::string(g.name));
@@ -54,7 +54,7 @@ TEST_CASE("the registry holds the fourteen generators, each with the common para
     }
   }
   CHECK(names == std::set<std::string>{"gas", "rain", "bullets", "swarm", "lattice", "mixed", "grazing", "sticks",
-                                       "plates", "crates", "rocks", "floor_ramp", "bowl", "pinball"});
+                                       "plates", "crates", "rocks", "floor_ramp", "bowl", "pinball", "tumble"});
 }
 
 TEST_CASE("every generator is deterministic in its seed", "[generators]") {
@@ -134,7 +134,7 @@ TEST_CASE("offset moves every body by exactly the offset", "[generators]") {
 TEST_CASE("bad generator names and parameters are refused by name", "[generators]") {
   CHECK_THROWS_WITH(make("plasma", json::object()),
                     "unknown generator 'plasma'; valid generators: gas, rain, bullets, swarm, lattice, mixed, grazing, "
-                    "sticks, plates, crates, rocks, floor_ramp, bowl, pinball");
+                    "sticks, plates, crates, rocks, floor_ramp, bowl, pinball, tumble");
   CHECK_THROWS_WITH(make("gas", {{"bodies", 10}, {"radius", 1}}),
                     Catch::Matchers::StartsWith("unknown parameter 'radius'; valid parameters: seed, bodies"));
   CHECK_THROWS_WITH(make("gas", {{"bodies", -3}}), Catch::Matchers::StartsWith("parameter 'bodies': must be"));
