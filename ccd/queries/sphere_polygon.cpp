@@ -160,7 +160,8 @@ class Condition {
 
   /// A generous bound on the double-precision polynomial's error on [c0, c1] (scale of
   /// its terms times 256 eps, plus the errors carried by the piece's state): when the
-  /// polynomial's minimum exceeds it, g > 0 on the whole range.
+  /// polynomial's minimum exceeds it, g > 0 on the whole range; when its maximum is below
+  /// minus it, g < 0 on the whole range.
   double double_band(double c0, double c1) const {
     const double S = c1 - c0;
     const double M = (q_->position(c0) - vertex_).norm() + q_->velocity(c0).norm() * S + 0.5 * q_->a.norm() * S * S;
@@ -190,9 +191,20 @@ class Condition {
     c0_ = c0;
     poly_ = polynomial(c0);
     const MonotoneSplit split = monotone_split(poly_, 0.0, c1 - c0);
-    double fmin = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < split.count; ++i) fmin = std::min(fmin, poly_(split.x[i]));
-    if (fmin > double_band(c0, c1)) return {};
+    double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
+    for (int i = 0; i < split.count; ++i) {
+      const double g = poly_(split.x[i]);
+      fmin = std::min(fmin, g);
+      fmax = std::max(fmax, g);
+    }
+    const double band = double_band(c0, c1);
+    if (fmin > band) return {};  // certainly out on the whole range
+    if (fmax < -band) {          // certainly in on the whole range
+      SublevelSet all;
+      all.intervals[0] = {c0, c1};
+      all.count = 1;
+      return all;
+    }
     return certified_sublevel_set(*this, split, c0, c1);
   }
 
