@@ -12,17 +12,14 @@ namespace {
 constexpr double kU2 = kUnitRoundoff * kUnitRoundoff;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-constexpr double kInfinity = std::numeric_limits<double>::infinity();
+}  // namespace
 
-// Error bound of one body's double-double position at t (per coordinate, metres).
 double position_error(const Piece& q, const PieceLow& low, double t) {
   double e = 32.0 * kU2 * piece_magnitude(q, t) * (1.0 + 1e-5) + low.start_error +
              low.velocity_error * std::fabs(t - q.t0) * (1.0 + 1e-5);
   if (low.edge_error > 0.0 && (t - q.t0 <= low.edge_window || q.t1 - t <= low.edge_window)) e += low.edge_error;
   return e;
 }
-
-}  // namespace
 
 double piece_magnitude(const Piece& q, double t) {
   const double s = std::fabs(t - q.t0);
@@ -64,40 +61,41 @@ double PairMotion::curvature_bound(double t) const {
 
 namespace {
 
-// The sign change of a monotone predicate on [a, b] (in(a) == in_a, in(b) != in_a),
-// narrowed to two adjacent doubles by stepping out from `guess` in doubling ulps and
-// then bisecting: a handful of evaluations when the guess is good. Returns the endpoint
-// of the final bracket on the side where in() is true.
-template <class In>
-double polish_sign_change(In&& in, double a, double b, bool in_a, double guess) {
-  double lo = a, hi = b;  // lo keeps a's state, hi b's
-  double x = (guess > a && guess < b) ? guess : 0.5 * (a + b);
-  if (x > lo && x < hi) {
-    if (in(x) == in_a) {
-      lo = x;
-      for (double step = std::nextafter(x, kInfinity) - x;; step *= 2.0) {
-        const double y = lo + step;
-        if (!(y < hi)) break;
-        if (in(y) != in_a) { hi = y; break; }
-        lo = y;
-      }
-    } else {
-      hi = x;
-      for (double step = x - std::nextafter(x, -kInfinity);; step *= 2.0) {
-        const double y = hi - step;
-        if (!(y > lo)) break;
-        if (in(y) == in_a) { lo = y; break; }
-        hi = y;
-      }
+// The contact function as certified_sublevel_set sees it: PairMotion's accurate value,
+// slope and curvature, and the double-precision root of the relative motion at c0 as the
+// first estimate of a boundary (closed form for the quadratic).
+struct PairFunction {
+  const PairMotion& motion;
+  const Vec3& D0;
+  const Vec3& Dv;
+  const Vec3& Da;
+  double R;
+  double c0;
+
+  ContactValue value(double t) const { return motion.value(t); }
+  double slope(double t) const { return motion.slope(t); }
+  double curvature_bound(double t) const { return motion.curvature_bound(t); }
+  double guess(double a, double b, bool in_left) const {
+    if (Da.isZero(0.0)) {
+      // f = A u^2 + 2 B u + C: the stable roots q / A and C / q, q = -(B + sign(B) sqrt(B^2 - A C)).
+      const double A = Dv.squaredNorm(), B = D0.dot(Dv), C = D0.squaredNorm() - R * R;
+      const double disc = B * B - A * C;
+      if (!(A > 0.0 && disc >= 0.0)) return std::numeric_limits<double>::quiet_NaN();
+      const double q = -(B + std::copysign(std::sqrt(disc), B));
+      // Entering (f decreasing: left of the vertex) is the smaller root.
+      const double r0 = q != 0.0 ? std::min(q / A, C / q) : -B / A;
+      const double r1 = q != 0.0 ? std::max(q / A, C / q) : -B / A;
+      return c0 + (in_left ? r1 : r0);
     }
+    auto f_double = [&](double t, double* df) {
+      const double u = t - c0;
+      const Vec3 d = D0 + Dv * u + Da * (0.5 * u * u);
+      *df = 2.0 * d.dot(Dv + Da * u);
+      return d.squaredNorm() - R * R;
+    };
+    return refine_sign_change(f_double, a, b, in_left, std::numeric_limits<double>::quiet_NaN());
   }
-  while (true) {
-    const double m = lo + 0.5 * (hi - lo);
-    if (!(m > lo && m < hi)) break;
-    if (in(m) == in_a) lo = m; else hi = m;
-  }
-  return in_a ? lo : hi;
-}
+};
 
 }  // namespace
 
@@ -105,82 +103,7 @@ SublevelSet PairMotion::contact_set(double c0, double c1) const {
   if (!(c1 >= c0)) return {};
   const DoubleSplit ds = double_split(c0, c1);
   if (ds.apart) return {};
-  // Critical points: the double estimates, polished on the sign of the double-double f'.
-  MonotoneSplit s;
-  std::array<bool, MonotoneSplit::capacity> critical{};
-  s.x[0] = c0;
-  s.count = 1;
-  const int n = ds.split.count;
-  for (int i = 1; i + 1 < n; ++i) {
-    const double lo = c0 + 0.5 * (ds.split.x[i - 1] + ds.split.x[i]);
-    const double hi = c0 + 0.5 * (ds.split.x[i] + ds.split.x[i + 1]);
-    double x = c0 + ds.split.x[i];
-    const double sl = slope(lo), sh = slope(hi);
-    if (lo < hi && ((sl <= 0.0) != (sh <= 0.0)))
-      x = polish_sign_change([this](double y) { return slope(y) <= 0.0; }, lo, hi, sl <= 0.0, x);
-    if (x > s.x[s.count - 1] && x < c1) {
-      critical[s.count] = true;
-      s.x[s.count++] = x;
-    }
-  }
-  if (c1 > c0) s.x[s.count++] = c1;
-  // Values and their bands.
-  std::array<double, MonotoneSplit::capacity> band{};
-  for (int i = 0; i < s.count; ++i) {
-    const ContactValue v = value(s.x[i]);
-    s.v[i] = v.f;
-    band[i] = v.error;
-    if (critical[i]) {
-      const double ulp2 = 2.0 * (std::nextafter(std::fabs(s.x[i]), kInfinity) - std::fabs(s.x[i]));
-      band[i] += curvature_bound(s.x[i]) * ulp2 * ulp2;
-    }
-  }
-  SplitStates st{};
-  const int m = s.count - 1;
-  auto out_at = [&](int j) { return s.v[j] > band[j]; };
-  for (int i = 0; i <= m; ++i) {
-    const double v = s.v[i];
-    const bool local_min = (i == 0 || s.v[i - 1] >= v) && (i == m || s.v[i + 1] >= v);
-    if (out_at(i)) {
-      st[i] = SplitState::Out;
-    } else if (local_min && v >= -band[i] && (i == 0 || out_at(i - 1)) && (i == m || out_at(i + 1))) {
-      st[i] = SplitState::Touch;
-    } else {
-      st[i] = SplitState::In;
-    }
-  }
-  // A boundary between an in and an out breakpoint: the double-precision root as the
-  // guess, polished on the double-double predicate f <= band.
-  auto boundary = [&](int i, bool in_left) {
-    auto f_double = [&](double t, double* df) {
-      const double u = t - c0;
-      const Vec3 d = ds.D0 + ds.Dv * u + ds.Da * (0.5 * u * u);
-      *df = 2.0 * d.dot(ds.Dv + ds.Da * u);
-      return d.squaredNorm() - ds.R * ds.R;
-    };
-    double guess = std::numeric_limits<double>::quiet_NaN();
-    if (ds.Da.isZero(0.0)) {
-      // f = A u^2 + 2 B u + C: the stable roots q / A and C / q, q = -(B + sign(B) sqrt(B^2 - A C)).
-      const double A = ds.Dv.squaredNorm(), B = ds.D0.dot(ds.Dv), C = ds.D0.squaredNorm() - ds.R * ds.R;
-      const double disc = B * B - A * C;
-      if (A > 0.0 && disc >= 0.0) {
-        const double q = -(B + std::copysign(std::sqrt(disc), B));
-        // Entering (f decreasing: left of the vertex) is the smaller root.
-        const double r0 = q != 0.0 ? std::min(q / A, C / q) : -B / A;
-        const double r1 = q != 0.0 ? std::max(q / A, C / q) : -B / A;
-        guess = c0 + (in_left ? r1 : r0);
-      }
-    } else {
-      guess = refine_sign_change(f_double, s.x[i], s.x[i + 1], in_left, guess);
-    }
-    return polish_sign_change(
-        [&](double y) {
-          const ContactValue v = value(y);
-          return v.f <= v.error;
-        },
-        s.x[i], s.x[i + 1], in_left, guess);
-  };
-  return assemble_sublevel_set(s, st, boundary);
+  return certified_sublevel_set(PairFunction{*this, ds.D0, ds.Dv, ds.Da, ds.R, c0}, ds.split, c0, c1);
 }
 
 PairMotion::DoubleSplit PairMotion::double_split(double c0, double c1) const {

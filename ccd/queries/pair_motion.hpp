@@ -16,6 +16,7 @@
 // The band therefore scales with the squared unit roundoff and the data's magnitudes,
 // about 1e-32 relative, not with the motion's length over the radius.
 #include <ccd/motion/trajectory.hpp>
+#include <ccd/queries/certified_sublevel_set.hpp>
 #include <ccd/queries/polynomial_roots.hpp>
 
 namespace ccd {
@@ -24,17 +25,16 @@ namespace ccd {
 /// (s = t - t0): the size of the numbers a position evaluation adds.
 double piece_magnitude(const Piece& q, double t);
 
-/// f(t) rounded to double and a bound on |f - f_exact| (both length^2).
-struct ContactValue {
-  double f = 0.0;
-  double error = 0.0;
-};
+/// A bound on the error of piece q's double-double position at t (exact_position), per
+/// coordinate (metres): 32 u^2 times piece_magnitude plus the errors carried from earlier
+/// breaks and, near an inexact reflection, the model's edge error.
+double position_error(const Piece& q, const PieceLow& low, double t);
 
 /// Two pieces (one per body) evaluated together.
 class PairMotion {
  public:
   PairMotion(const Piece& qa, const PieceLow& la, double ra, const Piece& qb, const PieceLow& lb, double rb);
-  /// f(t) and its certified error.
+  /// f(t) rounded to double and a certified bound on |f - f_exact| (both length^2).
   ContactValue value(double t) const;
   /// f'(t) = 2 d . d' (double-double evaluation, rounded).
   double slope(double t) const;

@@ -38,13 +38,14 @@ void append_intervals(const Trajectories& traj, std::uint32_t body, const Static
   const std::size_t first = out.size();
   const double gap = merge_gap(traj.horizon());
   const auto ps = traj.pieces(body);
+  const auto lows = traj.lows(body);
   const double r = traj.radius(body);
   auto it = std::lower_bound(ps.begin(), ps.end(), u0, [](const Piece& q, double x) { return q.t1 < x; });
   for (; it != ps.end() && it->t0 <= u1; ++it) {
     const Piece& q = *it;
     if (!piece_box(q, r, std::max(u0, q.t0), std::min(u1, q.t1)).overlaps(pbox)) continue;
     scratch.clear();
-    sphere_polygon_contacts(q.p, q.v, q.a, q.t0, r, poly, q.t0, q.t1, scratch);
+    sphere_polygon_contacts(q, lows[static_cast<std::size_t>(it - ps.begin())], r, poly, q.t0, q.t1, scratch);
     for (const ContactInterval& c : scratch) {
       if (c.exit < u0 || c.enter > u1) continue;
       const double enter = std::max(c.enter, u0), exit = std::min(c.exit, u1);

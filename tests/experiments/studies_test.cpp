@@ -353,12 +353,11 @@ TEST_CASE("study fit: orientation-aware bounds report fewer false positives on l
 
 TEST_CASE("study thin-obstacles: discrete methods pass through thin plates, conservative ones miss none",
           "[studies][scenery]") {
-  // The study's own scene (data/scenes/thin-obstacles.json), cut to its first 40 balls and
-  // the first half second (hundredths of a second in Release, so the sanitizer build runs
-  // it whole: with 24 balls no capsule skipped a polygon test).
-  ccd::Scene scene = ccd::load_scene(std::string(CCDLAB_SOURCE_DIR) + "/data/scenes/thin-obstacles.json");
-  scene.bodies.resize(40);
-  scene.horizon = 0.5;
+  // The study's scene (data/experiments/thin-obstacles.json: pinball, 100 obstacles, seed
+  // 1) with 40 of its 200 balls over half a second (hundredths of a second in Release, so
+  // the sanitizer build runs it whole).
+  const ccd::Scene scene =
+      ccdlab::generate_scene("pinball", json{{"bodies", 40}, {"obstacles", 100}, {"seed", 1}, {"horizon", 0.5}});
   const ccd::Trajectories traj(scene);
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   const std::vector<ccd::StaticEvent> events = ccd::compute_static_truth(traj, scene.scenery, 1);
