@@ -49,7 +49,9 @@ PeerRun run_peer_protocol(ccd::BroadPhase& method, std::size_t n) {
   std::vector<ccd::Aabb> boxes;
   std::vector<ccd::BodyPair> pairs;
   scene.boxes(boxes);
+  const double s0 = thread_cpu_ms();
   method.find_pairs(boxes, pairs);
+  run.setup_ms = thread_cpu_ms() - s0;
   if (ref) run.error = check(pairs, n, 0, ref->pairs_0, ref->checksum_0);
   std::vector<double> ms, wall;
   double pair_sum = 0, swap_sum = 0;
@@ -61,6 +63,7 @@ PeerRun run_peer_protocol(ccd::BroadPhase& method, std::size_t n) {
     method.find_pairs(boxes, pairs);
     const double c1 = thread_cpu_ms();
     const auto t1 = Clock::now();
+    run.max_ms = std::max(run.max_ms, c1 - c0);
     if (f > kWarmupFrames) {
       ms.push_back(c1 - c0);
       wall.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());

@@ -16,6 +16,8 @@ namespace ccdlab::bench {
 struct PeerRun {
   double median_ms = 0.0;       ///< median thread CPU ms per measured frame
   double min_ms = 0.0;          ///< fastest measured frame, thread CPU ms
+  double max_ms = 0.0;          ///< slowest frame of 1..22 (warm-up included), thread CPU ms
+  double setup_ms = 0.0;        ///< frame 0 (build and first query), thread CPU ms
   double median_wall_ms = 0.0;  ///< median wall-clock ms per measured frame
   double pairs_per_frame = 0.0;  ///< mean over the measured frames
   double swaps_per_frame = 0.0;  ///< mean of the method's "swaps" counter (BroadPhase::counters) over the measured frames

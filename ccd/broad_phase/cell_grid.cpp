@@ -11,8 +11,12 @@ namespace {
 
 // LSD radix sort of v[0, n) by bits [32, 32 + bits) (the cell key above the body id), with
 // digits of at most 11 bits (histograms stay in L1). Stable, so bodies keep index order
-// within a cell. Skipped when already sorted (coherent frames often are).
-void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<std::uint64_t>& tmp) {
+// within a cell. Skipped when already sorted (coherent frames often are). With t > 1
+// threads each pass splits v into t contiguous chunks: every thread counts the digits of
+// its chunk, the offsets are laid out by (digit, chunk), and every thread scatters its
+// chunk; so the result is the serial one, element for element.
+void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<std::uint64_t>& tmp,
+                       unsigned t = 1) {
   if (n < 2 || bits <= 0) return;
   bool sorted = true;
   for (std::size_t i = 1; i < n && sorted; ++i) sorted = (v[i - 1] >> 32) <= (v[i] >> 32);
@@ -25,20 +29,28 @@ void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<st
   const int passes = (bits + 10) / 11;
   const int width = (bits + passes - 1) / passes;
   const std::uint64_t mask = (std::uint64_t{1} << width) - 1;
-  std::array<std::uint32_t, 2048> count;  // 2^11 digits at most
+  t = std::max(1u, t);
+  std::vector<std::array<std::uint32_t, 2048>> count(t);  // 2^11 digits at most, per chunk
   std::uint64_t* src = v;
   std::uint64_t* dst = tmp.data();
   for (int p = 0; p < passes; ++p) {
     const int shift = 32 + p * width;
-    std::fill(count.begin(), count.begin() + (mask + 1), 0u);
-    for (std::size_t i = 0; i < n; ++i) ++count[(src[i] >> shift) & mask];
+    parallel_for(t, t, [&](std::size_t i, unsigned) {
+      std::array<std::uint32_t, 2048>& c = count[i];
+      std::fill(c.begin(), c.begin() + (mask + 1), 0u);
+      for (std::size_t k = n * i / t, e = n * (i + 1) / t; k < e; ++k) ++c[(src[k] >> shift) & mask];
+    });
     std::uint32_t sum = 0;
-    for (std::uint64_t d = 0; d <= mask; ++d) {
-      const std::uint32_t k = count[d];
-      count[d] = sum;
-      sum += k;
-    }
-    for (std::size_t i = 0; i < n; ++i) dst[count[(src[i] >> shift) & mask]++] = src[i];
+    for (std::uint64_t d = 0; d <= mask; ++d)
+      for (unsigned i = 0; i < t; ++i) {
+        const std::uint32_t k = count[i][d];
+        count[i][d] = sum;
+        sum += k;
+      }
+    parallel_for(t, t, [&](std::size_t i, unsigned) {
+      std::array<std::uint32_t, 2048>& c = count[i];
+      for (std::size_t k = n * i / t, e = n * (i + 1) / t; k < e; ++k) dst[c[(src[k] >> shift) & mask]++] = src[k];
+    });
     std::swap(src, dst);
   }
   if (src != v) std::copy(src, src + n, v);
@@ -145,7 +157,8 @@ void CellGrid::build(std::span<const Aabb> boxes, std::span<const std::uint8_t> 
   cell_key_.clear();
   cell_start_.clear();
   for (Level& lv : levels_) {
-    radix_sort_by_key(packed_.data() + lv.begin, lv.end - lv.begin, lv.key_bits, tmp_);
+    radix_sort_by_key(packed_.data() + lv.begin, lv.end - lv.begin, lv.key_bits, tmp_,
+                      threads_for(lv.end - lv.begin, threads_));
     lv.cell_begin = static_cast<std::uint32_t>(cell_key_.size());
     const std::uint32_t m = lv.end - lv.begin;
     const unsigned t = threads_for(m, threads_);

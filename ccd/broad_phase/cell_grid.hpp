@@ -30,12 +30,13 @@
 // row is 3 bits at its first key, mostly zero, and the first occupied cell's index is the
 // rank, with no data-dependent cursor loops (the scan was half the time at 1e6 bodies).
 //
-// Threads (set_threads, default 1). With T > 1 threads the keying, the gather and the
-// same-level scan split their index or cell ranges into T contiguous pieces of about equal
-// body counts (only while each piece keeps >= kMinBodiesPerThread bodies); each thread
-// writes its own pair buffer and the buffers are appended in range order, so the pairs come
-// out in exactly the serial order whatever T is. The radix sort and the cross-level merge
-// stay serial. Threads are started per call (ccd/util/parallel_for.hpp): tens of
+// Threads (set_threads, default 1). With T > 1 threads the keying, the radix sort's
+// passes (per-chunk digit counts, offsets laid out by digit then chunk, per-chunk scatter:
+// the serial result), the gather and the same-level scan split their index or cell ranges
+// into T contiguous pieces of about equal body counts (only while each piece keeps
+// >= kMinBodiesPerThread bodies); each thread writes its own pair buffer and the buffers
+// are appended in range order, so the pairs come out in exactly the serial order whatever
+// T is. The occupancy bitmap and the cross-level merge stay serial. Threads are started per call (ccd/util/parallel_for.hpp): tens of
 // microseconds, which is why small inputs stay serial.
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/util/parallel_for.hpp>

@@ -1,5 +1,4 @@
 #include <ccd/broad_phase/sap.hpp>
-#include <ccd/broad_phase/variance_axis.hpp>
 
 #include <algorithm>
 #include <bit>
@@ -21,7 +20,6 @@ void SweepAndPrune::load_bounds(std::span<const Aabb> boxes) {
 void SweepAndPrune::rebuild(std::span<const Aabb> boxes) {
   const std::size_t n = boxes.size();
   load_bounds(boxes);
-  axis_ = largest_variance_axis(boxes);  // Welford, robust far from the origin
 
   // Endpoint lists, sorted by (value, is_end); the id breaks the remaining ties so the
   // order is a function of the boxes alone.
@@ -36,30 +34,18 @@ void SweepAndPrune::rebuild(std::span<const Aabb> boxes) {
     });
   }
 
-  // Fill the pair set: bodies in order of their starts on the sweep axis; body i against
-  // the following bodies j while lo_j <= hi_i (x-overlap, since lo_i <= lo_j), then the
-  // full box test.
-  scratch_.clear();
-  for (const Endpoint& p : endpoints_[axis_])
-    if ((p.id & 1u) == 0) scratch_.push_back(p.id >> 1);
-  const double* bd = bounds_[axis_].data();
-  pairs_.clear(pairs_.size());
+  // Fill the pair set from the uniform grid (exact, O(n + pairs)). A one-axis sweep here
+  // meets every pair that overlaps on the sweep axis: ~n^(5/3) tests in a uniform 3D
+  // scene (3e9 at 1e6 bodies, where frame 1 took 37 s), against ~14 per body for the grid.
+  grid_.find_pairs(boxes, fill_);
+  pairs_.clear(fill_.size());
   degree_.assign(n, 0);
-  std::uint64_t tests = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    const std::uint32_t i = scratch_[k];
-    const double hi = bd[2 * i + 1];
-    for (std::size_t l = k + 1; l < n && bd[2 * scratch_[l]] <= hi; ++l) {
-      const std::uint32_t j = scratch_[l];
-      ++tests;
-      if (boxes[i].overlaps(boxes[j])) {
-        pairs_.insert(std::min(i, j), std::max(i, j));  // met once: always new
-        ++degree_[i];
-        ++degree_[j];
-      }
-    }
+  for (const BodyPair& p : fill_) {
+    pairs_.insert(p.a, p.b);  // each pair once: always new
+    ++degree_[p.a];
+    ++degree_[p.b];
   }
-  stats_.box_tests += tests;
+  stats_.box_tests += grid_.stats().box_tests;
   built_ = true;
 }
 

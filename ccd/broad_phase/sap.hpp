@@ -28,11 +28,13 @@
 //
 // Rebuild (stats().rebuilt): on the first call, when the body count changes, and when
 // the swaps of a frame exceed the budget (coherence lost, e.g. a complete reversal):
-// the endpoints are sorted with std::sort (O(n log n)) and the pair set is refilled by
-// one sort-and-sweep pass on the axis of largest centre variance (Welford's update).
+// the endpoints are sorted with std::sort (O(n log n)) and the pair set is refilled from
+// the uniform grid (`grid`, O(n + pairs); a one-axis sweep would meet ~n^(5/3) pairs that
+// overlap on that axis alone in a uniform 3D scene).
 // Steady state allocates nothing (the pair set grows only when the pairs outgrow it).
 // Boxes must be finite with lo <= hi.
 #include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/broad_phase/grid.hpp>
 #include <ccd/broad_phase/pair_set.hpp>
 
 #include <array>
@@ -57,8 +59,6 @@ class SweepAndPrune final : public BroadPhase {
   std::span<const Counter> counters() const override { return counters_; }
   /// Insertion-sort swaps of the last call (the "swaps" counter).
   std::uint64_t swaps() const { return counters_[0].value; }
-  /// The sweep axis of the last rebuild (largest centre variance): 0, 1, 2.
-  int axis() const { return axis_; }
 
  private:
   struct Endpoint {
@@ -71,11 +71,11 @@ class SweepAndPrune final : public BroadPhase {
   bool update_axis(int axis, std::span<const Aabb> boxes, std::uint64_t budget);
 
   SapOptions options_;
-  int axis_ = 0;
   bool built_ = false;
   std::array<std::vector<Endpoint>, 3> endpoints_;  // per axis, sorted by (value, is_end)
   std::array<std::vector<double>, 3> bounds_;       // per axis: [2i] = lo_i, [2i + 1] = hi_i
-  std::vector<std::uint32_t> scratch_;              // rebuild: bodies by start
+  UniformGrid grid_;                                // rebuild: fills the pair set
+  std::vector<BodyPair> fill_;                      // rebuild: the grid's pairs
   std::vector<std::uint32_t> degree_;               // per body: its pairs in the set
   PairSet pairs_;
   BroadPhaseStats stats_;

@@ -5,7 +5,9 @@
 // stronger than "same set": the same pairs in the same order as with one thread. Both
 // neighbour scans are covered: the occupancy bitmap (dense levels) and the cursors (very
 // sparse levels, more than 2^26 cells).
+#include <ccd/broad_phase/brute_force.hpp>
 #include <ccd/broad_phase/grid.hpp>
+#include <ccd/broad_phase/hgrid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
 #include <ccd/broad_phase/sap.hpp>
 
@@ -112,4 +114,74 @@ TEST_CASE("threaded grid: N = 100000 peer scene frames 0 and 22 match the publis
   grid.find_pairs(boxes, pairs);
   CHECK(pairs.size() == ref->pairs_22);
   CHECK(ccdlab::bench::peer_pair_checksum(pairs) == ref->checksum_22);
+}
+
+namespace {
+
+// grid and hgrid (one engine, cell_grid.hpp) against brute force, as sets.
+void check_exact(const std::vector<Aabb>& boxes, std::size_t expected_pairs) {
+  ccd::BruteForce brute;
+  std::vector<BodyPair> want = pairs_of(brute, boxes);
+  std::sort(want.begin(), want.end());
+  REQUIRE(want.size() == expected_pairs);
+  ccd::UniformGrid grid;
+  ccd::HierarchicalGrid hgrid;
+  for (ccd::BroadPhase* bp : {static_cast<ccd::BroadPhase*>(&grid), static_cast<ccd::BroadPhase*>(&hgrid)}) {
+    std::vector<BodyPair> got = pairs_of(*bp, boxes);
+    std::sort(got.begin(), got.end());
+    CHECK(got == want);
+  }
+}
+
+// A row of `n` boxes along `axis`, each of length `len` starting at base + k (len + gap_k),
+// gap_k = 0 for even k (touching: a pair) and `gap` for odd k (apart: no pair), plus a
+// second, unit-size box over each (so the boxes have two sizes, and hgrid two levels).
+std::vector<Aabb> touching_row(int axis, int n, double base, double len, double gap) {
+  std::vector<Aabb> out;
+  double x = base;
+  for (int k = 0; k < n; ++k) {
+    Aabb b{Vec3::Constant(base), Vec3::Constant(base + len)};
+    b.lo[axis] = x;
+    b.hi[axis] = x + len;
+    out.push_back(b);
+    x += len + (k % 2 == 0 ? 0.0 : gap);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("grid and hgrid separate touching boxes from boxes one tiny gap apart at any scale",
+          "[broad_phase][grid]") {
+  // Dyadic bounds chosen so that every sum below is exact: touching boxes share a bound
+  // bit for bit, apart ones differ by the gap (far below the cell size, and below single
+  // precision: a cell index or a float filter rounding them together must not decide).
+  // Rows of 64 boxes, 32 touching junctions (k even) and 31 gaps: 32 pairs per row.
+  SECTION("touching at 1 + 2^-40, apart by 2^-40, on each axis") {
+    for (int axis = 0; axis < 3; ++axis) check_exact(touching_row(axis, 64, 1.0, 1.0 + 0x1p-40, 0x1p-40), 32);
+  }
+  SECTION("far from the origin: base 2^40 (float step 2^17), lengths 1 + 2^-12, gaps 2^-12") {
+    check_exact(touching_row(0, 64, 0x1p40, 1.0 + 0x1p-12, 0x1p-12), 32);
+  }
+  SECTION("beyond the float range: base 2^130 and -2^130") {
+    check_exact(touching_row(1, 64, 0x1p130, 0x1p80, 0x1p78), 32);
+    check_exact(touching_row(2, 64, -0x1p130, 0x1p80, 0x1p78), 32);
+  }
+  SECTION("below the float range: lengths 2^-1000 + 2^-1040, gaps 2^-1040 (all round to 0)") {
+    check_exact(touching_row(0, 64, 0.0, 0x1p-1000 + 0x1p-1040, 0x1p-1040), 32);
+  }
+  SECTION("sign change: boxes touching at 0 from both sides, and at -0.0") {
+    std::vector<Aabb> boxes = {{Vec3(-1, -1, -1), Vec3(0, 0, 0)}, {Vec3(-0.0, -1, -1), Vec3(1, 0, 0)},
+                               {Vec3(0x1p-60, 0x1p-60, 0x1p-60), Vec3(1, 1, 1)}};
+    // {0,1} touch at x = 0 (-0.0 == 0); box 2 starts 2^-60 beyond both on every axis.
+    check_exact(boxes, 1);
+  }
+  SECTION("mixed sizes with 2^-40 gaps: hgrid's cross-level scan on two levels") {
+    std::vector<Aabb> boxes = touching_row(0, 64, 3.0, 1.0 + 0x1p-40, 0x1p-40);
+    // A large box ending exactly where the row starts (touching box 0 only) and one ending
+    // 2^-40 before it (touching nothing); both share the row's y and z range.
+    boxes.push_back({Vec3(3.0 - 40.0, 3.0, 3.0), Vec3(3.0, 4.0, 4.0)});
+    boxes.push_back({Vec3(3.0 - 40.0, 3.0 - 50.0, 3.0 - 50.0), Vec3(3.0 - 0x1p-40, 3.0 - 0x1p-40, 3.0 - 0x1p-40)});
+    check_exact(boxes, 33);
+  }
 }
