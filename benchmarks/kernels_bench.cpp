@@ -5,6 +5,15 @@
 // pairs (seed 11): centres in [0, 10]^3, velocities in [-10, 10]^3, radii in [0.5, 1.5],
 // one time unit. Counter: contacts (pairs with a contact in [0, 1]).
 //
+// sphere_contact_linear_batch: the same pairs through the batched exact query
+// (ccd/queries/sphere_sphere_batch.hpp: structure of arrays, SIMD filter, the scalar exact
+// query on the undecided pairs; identical answers), ns per pair.
+//
+// narrow/sphere_sphere/{scalar,batch}/100000: the exact narrow phase alone on the pairs that
+// pass the capsule bound in one step of the 100,000-body peer scene (below): pair by pair
+// through ccd::sphere_sphere_narrow, and through ccd::sphere_sphere_narrow_batch (the
+// pipeline's). Counter: confirmed (contacts), s/pair.
+//
 // pipeline/continuous/BOUND and pipeline/discrete/aabb: one step (dt = 1/60) of the shared 100,000-body
 // peer scene (benchmarks/support/peer_scene.hpp: its positions, velocities and radii, linear
 // motion, no walls during the step), through the step pipeline the runner calls
@@ -13,7 +22,9 @@
 // pair test + the exact first contact on the survivors; the discrete one is the `aabb`
 // bound at the step's start + `grid` + the bound's test + the narrow phase's sample test
 // (ccd::in_contact, the ground truth's definition of touching). Counters: candidates
-// (broad-phase pairs), passed (after the bound's test), confirmed (contacts).
+// (broad-phase pairs), passed (after the bound's test), confirmed (contacts). The
+// continuous pipelines run the batched narrow phase; .../scalar runs the same pipeline
+// with the sphere x sphere entry called pair by pair (a table whose entry wraps it).
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
@@ -21,6 +32,9 @@
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/queries/ray_sphere.hpp>
+#include <ccd/narrow/sphere_sphere_narrow.hpp>
+#include <ccd/narrow/sphere_sphere_narrow_batch.hpp>
+#include <ccd/queries/sphere_sphere_batch.hpp>
 #include <ccd/queries/sphere_sphere_contact.hpp>
 #include <ccd/scene/scene.hpp>
 
@@ -88,6 +102,23 @@ void sphere_contact_linear_ray(benchmark::State& state) {
   });
 }
 
+void sphere_contact_linear_batch(benchmark::State& state) {
+  constexpr std::size_t n = 100000;
+  const auto& [a, b] = random_pairs(n);
+  ccd::LinearSpherePairs pairs;
+  for (std::size_t i = 0; i < n; ++i) pairs.push_back(a[i], b[i]);
+  std::vector<ccd::SphereSphereContact> out(n);
+  std::size_t contacts = 0;
+  for (auto _ : state) {
+    ccd::sphere_sphere_first_contact_batch(pairs, 1.0, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+  for (const ccd::SphereSphereContact& c : out) contacts += c.status != ccd::ContactStatus::Miss;
+  state.counters["contacts"] = static_cast<double>(contacts);
+  state.counters["s/pair"] = benchmark::Counter(static_cast<double>(n), benchmark::Counter::kIsIterationInvariantRate |
+                                                                            benchmark::Counter::kInvert);
+}
+
 struct PipelineScene {
   ccd::Scene scene;
   ccd::Trajectories traj;
@@ -116,11 +147,24 @@ const PipelineScene& pipeline_scene() {
   return s;
 }
 
-void pipeline(benchmark::State& state, const char* bound_name) {
+// The default narrow table with the sphere x sphere entry wrapped, so that the pipeline
+// calls it pair by pair instead of through the batched form.
+const ccd::NarrowTable& scalar_narrow_table() {
+  static const ccd::NarrowTable table = [] {
+    ccd::NarrowTable t = ccd::narrow_table();
+    t.add(ccd::ShapeKind::Sphere, ccd::ShapeKind::Sphere,
+          [](const ccd::NarrowInput& in, std::uint32_t a, std::uint32_t b) { return ccd::sphere_sphere_narrow(in, a, b); });
+    return t;
+  }();
+  return table;
+}
+
+void pipeline(benchmark::State& state, const char* bound_name, bool scalar_narrow = false) {
   const PipelineScene& s = pipeline_scene();
   const ccd::BoundSpec spec = ccd::parse_bound(bound_name);
   const bool continuous = spec.info->knowledge != ccd::Knowledge::Instant;
-  ccd::StepPipeline step_pipeline(spec.make(), spec.info->knowledge, std::make_unique<ccd::UniformGrid>());
+  ccd::StepPipeline step_pipeline(spec.make(), spec.info->knowledge, std::make_unique<ccd::UniformGrid>(),
+                                  scalar_narrow ? scalar_narrow_table() : ccd::narrow_table());
   ccd::StepContext ctx;
   ctx.t0 = 0.0;
   ctx.t1 = continuous ? ccdlab::bench::PeerScene::kDt : 0.0;
@@ -134,11 +178,48 @@ void pipeline(benchmark::State& state, const char* bound_name) {
   state.counters["confirmed"] = static_cast<double>(step.contacts.size());
 }
 
+// The narrow phase alone on the pairs that pass the capsule bound in one step.
+void narrow(benchmark::State& state, bool batched) {
+  const PipelineScene& s = pipeline_scene();
+  static const std::vector<ccd::BodyPair> passed = [&s] {
+    const ccd::BoundSpec spec = ccd::parse_bound("capsule");
+    ccd::StepPipeline step_pipeline(spec.make(), spec.info->knowledge, std::make_unique<ccd::UniformGrid>());
+    ccd::StepContext ctx;
+    ctx.t1 = ccdlab::bench::PeerScene::kDt;
+    ctx.start = s.start;
+    ctx.exact = &s.traj;
+    ccd::StepResult step;
+    step_pipeline.run(ctx, s.traj, step, nullptr, s.piece);
+    return step.passed;
+  }();
+  const ccd::NarrowInput in{&s.traj, s.start, s.piece, 0.0, ccdlab::bench::PeerScene::kDt, false};
+  std::vector<ccd::ContactResult> out(passed.size());
+  for (auto _ : state) {
+    if (batched) {
+      ccd::sphere_sphere_narrow_batch(in, passed, out);
+    } else {
+      for (std::size_t i = 0; i < passed.size(); ++i) out[i] = ccd::sphere_sphere_narrow(in, passed[i].a, passed[i].b);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  std::size_t confirmed = 0;
+  for (const ccd::ContactResult& c : out) confirmed += c.found();
+  state.counters["confirmed"] = static_cast<double>(confirmed);
+  state.counters["s/pair"] = benchmark::Counter(static_cast<double>(passed.size()),
+                                                benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
 BENCHMARK(sphere_contact_linear)->Unit(benchmark::kMillisecond);
 BENCHMARK(sphere_contact_linear_ray)->Unit(benchmark::kMillisecond);
+BENCHMARK(sphere_contact_linear_batch)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(narrow, scalar, false)->Name("narrow/sphere_sphere/scalar/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(narrow, batch, true)->Name("narrow/sphere_sphere/batch/100000")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(pipeline, capsule, "capsule")->Name("pipeline/continuous/capsule/100000")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(pipeline, capsule_scalar, "capsule", true)
+    ->Name("pipeline/continuous/capsule/100000/scalar")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(pipeline, swept_aabb, "swept_aabb")
     ->Name("pipeline/continuous/swept_aabb/100000")
     ->Unit(benchmark::kMillisecond);

@@ -1,4 +1,6 @@
 #include <ccd/narrow/body_polygon_narrow.hpp>
+#include <ccd/narrow/sphere_sphere_narrow.hpp>
+#include <ccd/narrow/sphere_sphere_narrow_batch.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
 #include <algorithm>
@@ -75,12 +77,15 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   out.contacts.clear();
   NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test(), rigid};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
-  for (std::size_t i = 0; i < out.passed.size(); ++i) {
-    const BodyPair p = out.passed[i];
-    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
-    // Sphere scenes: the one entry looked up once; rigid scenes: per pair of shape kinds.
-    const ContactResult c = rigid ? table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b) : narrow_(in, p.a, p.b);
-    if (c.found()) out.contacts.push_back({p, c});
+  if (!rigid && !from_earliest && !sample_test() && narrow_.fn == &sphere_sphere_narrow && !narrow_.swapped) {
+    // Sphere scenes, step queries: the batched exact entry (the same results; a SIMD
+    // filter settles most pairs, ccd/narrow/sphere_sphere_narrow_batch.hpp).
+    batch_results_.resize(out.passed.size());
+    sphere_sphere_narrow_batch(in, out.passed, batch_results_);
+    for (std::size_t i = 0; i < out.passed.size(); ++i)
+      if (batch_results_[i].found()) out.contacts.push_back({out.passed[i], batch_results_[i]});
+  } else {
+    narrow_pairs(in, out, rigid, from_earliest, ctx);
   }
   watch.stop(local.narrow);
 
@@ -91,6 +96,17 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
     times->bound += local.bound;
     times->broad += local.broad;
     times->narrow += local.narrow;
+  }
+}
+
+void StepPipeline::narrow_pairs(NarrowInput in, StepResult& out, const RigidMotion* rigid, bool from_earliest,
+                                const StepContext& ctx) const {
+  for (std::size_t i = 0; i < out.passed.size(); ++i) {
+    const BodyPair p = out.passed[i];
+    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
+    // Sphere scenes: the one entry looked up once; rigid scenes: per pair of shape kinds.
+    const ContactResult c = rigid ? table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b) : narrow_(in, p.a, p.b);
+    if (c.found()) out.contacts.push_back({p, c});
   }
 }
 

@@ -17,6 +17,8 @@
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
 //     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
+//     Sphere scenes' step queries (without narrow_from_earliest) go through the batched
+//     form of the exact entry, ccd/narrow/sphere_sphere_narrow_batch.hpp: same results.
 // Scenery (set_scenery: the scene's static polygons, indexed once in a StaticIndex,
 // ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
 //  5. static_index.find_pairs(boxes) -> `static_candidates` (body, polygon), by body;
@@ -142,6 +144,10 @@ class StepPipeline {
   const NarrowTable* table_;
   NarrowEntry narrow_;
   std::vector<Aabb> boxes_;
+  std::vector<ContactResult> batch_results_;  // the batched narrow phase's answers, per passed pair
+  // The narrow table's entries pair by pair (rigid scenes, sample tests, narrow_from_earliest).
+  void narrow_pairs(NarrowInput in, StepResult& out, const RigidMotion* rigid, bool from_earliest,
+                    const StepContext& ctx) const;
   // Scenery.
   void run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local, bool timed);
   std::span<const StaticPolygon> scenery_;
