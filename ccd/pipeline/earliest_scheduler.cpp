@@ -48,13 +48,13 @@ struct Check {
   double t;
   std::uint32_t a, b;  // as in Event
   double since;        // when the bounds it came from start
+  double to;           // the end of the common window
 };
 
 // A narrow call over [from, until] in the pair's common window ending at `to`.
 struct Job {
   std::uint32_t a, b;
   double from, until, to;
-  double since;
 };
 
 // Adds the time since `from` to `into` when timing is on.
@@ -187,16 +187,17 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   };
   // Tests the reported pairs and queues a check for each that may touch (not before now).
   const auto test_pairs = [&](double now) {
+    if (inline_checks) pending.reserve(pending.size() + (wrapped ? image_pairs.size() : pairs.size()));
     if (wrapped) {
       for (const ImagePair& q : image_pairs) {
         ++stats_.pair_checks;
         const PairTest r = bound_->test(std::min(q.x, q.y), std::max(q.x, q.y));
         if (!r.possible()) continue;
         ++stats_.passed;
-        const double since = std::max(bound_->window(q.x).t0, bound_->window(q.y).t0);
+        const Window w = common_window(bound_->window(q.x), bound_->window(q.y));
         const double t = std::max(r.earliest, now);
-        if (inline_checks) pending.push_back({t, q.x, q.y, since});
-        else queue.push({t, Kind::Check, q.x, q.y, version[q.a], version[q.b], since});
+        if (inline_checks) pending.push_back({t, q.x, q.y, w.t0, w.t1});
+        else queue.push({t, Kind::Check, q.x, q.y, version[q.a], version[q.b], w.t0});
       }
       return;
     }
@@ -205,10 +206,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const PairTest r = bound_->test(p.a, p.b);
       if (!r.possible()) continue;
       ++stats_.passed;
-      const double since = std::max(bound_->window(p.a).t0, bound_->window(p.b).t0);
+      const Window w = common_window(bound_->window(p.a), bound_->window(p.b));
       const double t = std::max(r.earliest, now);
-      if (inline_checks) pending.push_back({t, p.a, p.b, since});
-      else queue.push({t, Kind::Check, p.a, p.b, version[p.a], version[p.b], since});
+      if (inline_checks) pending.push_back({t, p.a, p.b, w.t0, w.t1});
+      else queue.push({t, Kind::Check, p.a, p.b, version[p.a], version[p.b], w.t0});
     }
   };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
@@ -409,7 +410,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   // nothing. Reads only the two bodies' bounds and motion, which no refresh changes before
   // the check is due (both windows end at or after c.t).
   const auto decide = [&](const Check& c) {
-    const double to = std::min(bound_->window(c.a).t1, bound_->window(c.b).t1);
+    const double to = c.to;
     if (options_.recheck) {
       // A speed re-check from both bodies' states now (no bound built), then the narrow
       // phase from its earliest time over one chunk; the pair comes back at the chunk's end.
@@ -428,10 +429,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const double h = options_.chunk > 0.0 && closing > 0.0 ? options_.chunk * (ba.radius + bb.radius) / closing
                                                               : std::numeric_limits<double>::infinity();
       if (from < to && from >= c.t + h) {  // far enough: look again when they may touch
-        next.push_back({from, c.a, c.b, c.since});
+        next.push_back({from, c.a, c.b, c.since, to});
         return;
       }
-      jobs.push_back({c.a, c.b, from, from + h < to ? from + h : to, to, c.since});
+      jobs.push_back({c.a, c.b, from, from + h < to ? from + h : to, to});
       return;
     }
     if (refine && c.t - c.since > stale_age) {
@@ -450,7 +451,8 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
         pc.exact = knowledge_ == Knowledge::Exact ? &pv : nullptr;
         if (scratch_boxes.size() < 2) scratch_boxes.resize(2);
         scratch_->refresh(pc, pair_ids, scratch_boxes);
-        r = scratch_->test(0, 1);
+        // Disjoint boxes: the bounds inside them are too (no bound test needed).
+        if (scratch_boxes[0].overlaps(scratch_boxes[1])) r = scratch_->test(0, 1);
       } else {
         pair_bodies[0] = c.a;
         pair_bodies[1] = c.b;
@@ -459,17 +461,17 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
         ctx.start = states;
         if (scratch_boxes.size() != n) scratch_boxes.resize(n);
         scratch_->refresh(ctx, pair_bodies, scratch_boxes);
-        r = scratch_->test(c.a, c.b);
+        if (scratch_boxes[c.a].overlaps(scratch_boxes[c.b])) r = scratch_->test(c.a, c.b);
       }
       stats_.refreshes += 2;
       ++stats_.pair_checks;
       if (r.possible()) {
         ++stats_.passed;
-        next.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t});
+        next.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t, to});
       }
       return;
     }
-    jobs.push_back({c.a, c.b, c.t, to, to, c.since});
+    jobs.push_back({c.a, c.b, c.t, to, to});
   };
   // A narrow call over [from, until]; a found contact is reported over [from, to] and ends
   // the pair's window (as one call over [from, to] would have found it first), else a chunk
@@ -478,13 +480,15 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     ++stats_.narrow_calls;
     const ContactResult c = narrow_pair(j.a, j.b, j.from, j.until);
     if (c.found()) contacts.push_back({{owner(j.a), owner(j.b)}, c, j.from, j.to});
-    else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.since});
+    else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to});  // a re-check (reads no `since`)
   };
   // One round of inline checks: every pending check decided (bound time), then the round's
   // narrow calls (narrow time); what they give is the next round. Two clock reads a stage
   // per round, not per check.
   const auto drain_round = [&] {
     jobs.clear();
+    jobs.reserve(pending.size());
+    next.reserve(pending.size());
     watch.start();
     for (const Check& c : pending) decide(c);
     watch.stop(local.bound);
