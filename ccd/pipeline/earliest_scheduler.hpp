@@ -15,7 +15,8 @@
 //    a pair that may touch gets a check at its `earliest`;
 //  - check of pair (a, b) at t: when the bounds the check came from are older than
 //    `stale` x dt, they are first rebuilt at t (Hubbard's refinement: a fresh bound is
-//    tight near t) and the pair re-tested, which gives a later check or none; otherwise
+//    tight near t) and the pair re-tested (the pair's own refined boxes first: disjoint
+//    boxes hold disjoint bounds), which gives a later check or none; otherwise
 //    the narrow phase runs from t to the end of the common window. The refinement builds
 //    the pair's own bounds from t to the end of the common window in a second instance of
 //    the bound (default: nothing else changes), or, with `refresh_bodies`, refreshes the
@@ -115,7 +116,8 @@ struct ScheduledContact {
 };
 
 struct ScheduleStats {
-  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls and speed re-checks)
+  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls, refinements whose
+                                   ///< refined boxes are disjoint, and speed re-checks)
   std::uint64_t rechecks = 0;      ///< of those, speed re-checks (ScheduleOptions::recheck)
   std::uint64_t passed = 0;        ///< of those, Possible
   std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
