@@ -166,6 +166,9 @@ void register_all() {
   sched("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(0.25, 0, true, 2));
   sched("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0,
         opts(0.25, 0, true, 0));
+  sched("sparse_gas/earliest:stale=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(1.0, 0, false, 2));
+  sched("sparse_gas/earliest:stale=1/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", 1.0,
+        opts(1.0, 0, false, 2));
   // Bullets: fixed steps need a dt small enough for the bullets.
   fix("bullets/fixed/capsule/grid/dt=0.03", bullets, "capsule/grid", 0.03);
   fix("bullets/fixed/capsule/grid/dt=0.01", bullets, "capsule/grid", 0.01);

@@ -2,6 +2,7 @@
 
 #include <bounds/speed_earliest.hpp>
 #include <ccd/motion/rigid_motion.hpp>
+#include <ccd/motion/state_cursor.hpp>
 #include <ccd/pipeline/scheduler_images.hpp>
 
 #include <algorithm>
@@ -40,6 +41,20 @@ struct Later {
     if (x.a != y.a) return x.a > y.a;
     return x.b > y.b;
   }
+};
+
+// A pair check run as soon as it is made (see `inline_checks` in run()).
+struct Check {
+  double t;
+  std::uint32_t a, b;  // as in Event
+  double since;        // when the bounds it came from start
+  double to;           // the end of the common window
+};
+
+// A narrow call over [from, until] in the pair's common window ending at `to`.
+struct Job {
+  std::uint32_t a, b;
+  double from, until, to;
 };
 
 // Adds the time since `from` to `into` when timing is on.
@@ -100,11 +115,17 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   // its bodies' stamps are (a slot given to another body then never matches either).
   std::vector<std::uint64_t> version(n, 0);
   std::uint64_t stamp = 0;
-  std::vector<Aabb> boxes, scratch_boxes(n);  // the scratch instance holds refined pairs only
+  std::vector<Aabb> boxes, scratch_boxes;  // the scratch instance holds refined pairs only (sized at the first)
   std::uint32_t pair_bodies[2];
   std::vector<BodyPair> pairs;
   std::vector<std::uint32_t> batch;
   std::priority_queue<Event, std::vector<Event>, Later> queue;
+  // Checks that nothing can invalidate before they are due (no refinement refreshes a
+  // body) run as soon as they are made, in rounds: `pending` the round's checks, `next`
+  // the checks they give, `jobs` the round's narrow calls. Otherwise checks are queued.
+  const bool inline_checks = !options_.refresh_bodies || options_.recheck;
+  std::vector<Check> pending, next;
+  std::vector<Job> jobs;
 
   StepContext ctx;
   ctx.acceleration_bound = acceleration_bound;
@@ -130,7 +151,12 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   const auto owner = [&](std::uint32_t x) { return wrapped ? images.owner(x) : x; };
 
   const auto state_at = [&](std::uint32_t i, double t) {
-    states[i] = wrapped ? images.state(i, t) : BodyState{motion.position(i, t), motion.velocity(i, t), motion.radius(i)};
+    if (wrapped) {
+      states[i] = images.state(i, t);
+      return;
+    }
+    const Piece& q = motion.piece_at(i, t);  // one lookup for both
+    states[i] = BodyState{q.position(t), q.velocity(t), motion.radius(i)};
   };
   // Wrapped scenes: the reported slot pairs as image pairs (a < b, relative shift), each once.
   struct ImagePair {
@@ -161,14 +187,17 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   };
   // Tests the reported pairs and queues a check for each that may touch (not before now).
   const auto test_pairs = [&](double now) {
+    if (inline_checks) pending.reserve(pending.size() + (wrapped ? image_pairs.size() : pairs.size()));
     if (wrapped) {
       for (const ImagePair& q : image_pairs) {
         ++stats_.pair_checks;
         const PairTest r = bound_->test(std::min(q.x, q.y), std::max(q.x, q.y));
         if (!r.possible()) continue;
         ++stats_.passed;
-        const double since = std::max(bound_->window(q.x).t0, bound_->window(q.y).t0);
-        queue.push({std::max(r.earliest, now), Kind::Check, q.x, q.y, version[q.a], version[q.b], since});
+        const Window w = common_window(bound_->window(q.x), bound_->window(q.y));
+        const double t = std::max(r.earliest, now);
+        if (inline_checks) pending.push_back({t, q.x, q.y, w.t0, w.t1});
+        else queue.push({t, Kind::Check, q.x, q.y, version[q.a], version[q.b], w.t0});
       }
       return;
     }
@@ -177,8 +206,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const PairTest r = bound_->test(p.a, p.b);
       if (!r.possible()) continue;
       ++stats_.passed;
-      const double since = std::max(bound_->window(p.a).t0, bound_->window(p.b).t0);
-      queue.push({std::max(r.earliest, now), Kind::Check, p.a, p.b, version[p.a], version[p.b], since});
+      const Window w = common_window(bound_->window(p.a), bound_->window(p.b));
+      const double t = std::max(r.earliest, now);
+      if (inline_checks) pending.push_back({t, p.a, p.b, w.t0, w.t1});
+      else queue.push({t, Kind::Check, p.a, p.b, version[p.a], version[p.b], w.t0});
     }
   };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
@@ -335,7 +366,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     refresh_wrapped(0.0, true);
   } else {
     watch.start();
-    for (std::uint32_t i = 0; i < n; ++i) state_at(i, 0.0);
+    StateCursor(motion).evaluate(0.0, states);  // every body at 0: one pass, no piece search
     ctx.t0 = 0.0;
     ctx.t1 = std::min(dt, T);
     ctx.start = states;
@@ -374,9 +405,111 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     return rigid ? table_->find(rigid->kind(x), rigid->kind(y))(in, x, y) : narrow_(in, x, y);
   };
 
+  // A due check at c.t (inline mode; c.a, c.b slots when wrapped): the speed re-check or the
+  // refinement, which give a later check (into `next`), a narrow call (into `jobs`) or
+  // nothing. Reads only the two bodies' bounds and motion, which no refresh changes before
+  // the check is due (both windows end at or after c.t).
+  const auto decide = [&](const Check& c) {
+    const double to = c.to;
+    if (options_.recheck) {
+      // A speed re-check from both bodies' states now (no bound built), then the narrow
+      // phase from its earliest time over one chunk; the pair comes back at the chunk's end.
+      state_at(c.a, c.t);
+      state_at(c.b, c.t);
+      const SpeedBall ba{states[c.a].position, c.t, speed_bound(c.a, c.t, to), states[c.a].radius};
+      const SpeedBall bb{states[c.b].position, c.t, speed_bound(c.b, c.t, to), states[c.b].radius};
+      const double from = std::max(c.t, speed_earliest(ba, bb));
+      ++stats_.pair_checks;
+      ++stats_.rechecks;
+      if (from > to) return;  // no contact possible in the rest of the common window
+      ++stats_.passed;
+      // The chunk: the time in which the pair's distance may change by `chunk` x the sum of
+      // their radii (at least the rest of the window when neither may move).
+      const double closing = ba.speed + bb.speed;
+      const double h = options_.chunk > 0.0 && closing > 0.0 ? options_.chunk * (ba.radius + bb.radius) / closing
+                                                              : std::numeric_limits<double>::infinity();
+      if (from < to && from >= c.t + h) {  // far enough: look again when they may touch
+        next.push_back({from, c.a, c.b, c.since, to});
+        return;
+      }
+      jobs.push_back({c.a, c.b, from, from + h < to ? from + h : to, to});
+      return;
+    }
+    if (refine && c.t - c.since > stale_age) {
+      // The pair's own bounds from now to the end of the common window.
+      state_at(c.a, c.t);
+      state_at(c.b, c.t);
+      PairTest r;
+      if (wrapped) {  // the two slots' paths as bodies 0 and 1 of the scratch instance
+        pair_states[0] = states[c.a];
+        pair_states[1] = states[c.b];
+        const Trajectories& pv = images.pair_view(c.a, c.b, c.t, to);
+        StepContext pc = ctx;
+        pc.t0 = c.t;
+        pc.t1 = to;
+        pc.start = pair_states;
+        pc.exact = knowledge_ == Knowledge::Exact ? &pv : nullptr;
+        if (scratch_boxes.size() < 2) scratch_boxes.resize(2);
+        scratch_->refresh(pc, pair_ids, scratch_boxes);
+        // Disjoint boxes: the bounds inside them are too (no bound test needed).
+        if (scratch_boxes[0].overlaps(scratch_boxes[1])) r = scratch_->test(0, 1);
+      } else {
+        pair_bodies[0] = c.a;
+        pair_bodies[1] = c.b;
+        ctx.t0 = c.t;
+        ctx.t1 = to;
+        ctx.start = states;
+        if (scratch_boxes.size() != n) scratch_boxes.resize(n);
+        scratch_->refresh(ctx, pair_bodies, scratch_boxes);
+        if (scratch_boxes[c.a].overlaps(scratch_boxes[c.b])) r = scratch_->test(c.a, c.b);
+      }
+      stats_.refreshes += 2;
+      ++stats_.pair_checks;
+      if (r.possible()) {
+        ++stats_.passed;
+        next.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t, to});
+      }
+      return;
+    }
+    jobs.push_back({c.a, c.b, c.t, to, to});
+  };
+  // A narrow call over [from, until]; a found contact is reported over [from, to] and ends
+  // the pair's window (as one call over [from, to] would have found it first), else a chunk
+  // short of the window's end brings the pair back at its end (into `next`).
+  const auto narrow_job = [&](const Job& j) {
+    ++stats_.narrow_calls;
+    const ContactResult c = narrow_pair(j.a, j.b, j.from, j.until);
+    if (c.found()) contacts.push_back({{owner(j.a), owner(j.b)}, c, j.from, j.to});
+    else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to});  // a re-check (reads no `since`)
+  };
+  // One round of inline checks: every pending check decided (bound time), then the round's
+  // narrow calls (narrow time); what they give is the next round. Two clock reads a stage
+  // per round, not per check.
+  const auto drain_round = [&] {
+    jobs.clear();
+    jobs.reserve(pending.size());
+    next.reserve(pending.size());
+    watch.start();
+    for (const Check& c : pending) decide(c);
+    watch.stop(local.bound);
+    watch.start();
+    for (const Job& j : jobs) narrow_job(j);
+    watch.stop(local.narrow);
+    pending.swap(next);
+    next.clear();
+  };
+
   bool finished = true;
   std::uint64_t popped = 0;
-  while (!queue.empty()) {
+  while (!queue.empty() || !pending.empty()) {
+    if (!pending.empty()) {  // the checks the last refresh made, in rounds
+      if (cancel && cancel->load(std::memory_order_relaxed)) {
+        finished = false;
+        break;
+      }
+      drain_round();
+      continue;
+    }
     if (cancel && (++popped & 1023u) == 0 && cancel->load(std::memory_order_relaxed)) {
       finished = false;
       break;
@@ -395,90 +528,22 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       else refresh(e.t);
       continue;
     }
+    // A queued check (refresh_bodies without recheck only): one event at a time, since its
+    // refinement refreshes bodies.
     const std::uint32_t oa = owner(e.a), ob = owner(e.b);  // bodies (e.a, e.b: slots when wrapped)
     if (oa == SchedulerImages::kFree || ob == SchedulerImages::kFree || version[oa] != e.va || version[ob] != e.vb)
       continue;  // queued from an older bound
     const Window wa = bound_->window(e.a);
     const Window wb = bound_->window(e.b);
+    batch.clear();
+    if (refine && e.t - wa.t0 > stale_age) batch.push_back(oa);
+    if (refine && e.t - wb.t0 > stale_age) batch.push_back(ob);
+    if (!batch.empty()) {
+      if (wrapped) refresh_wrapped(e.t, false);
+      else refresh(e.t);
+      continue;
+    }
     const double to = std::min(wa.t1, wb.t1);
-    if (options_.recheck) {
-      // A speed re-check from both bodies' states now (no bound built), then the narrow
-      // phase from its earliest time over one chunk; the pair comes back at the chunk's end.
-      watch.start();
-      state_at(e.a, e.t);
-      state_at(e.b, e.t);
-      const SpeedBall ba{states[e.a].position, e.t, speed_bound(e.a, e.t, to), states[e.a].radius};
-      const SpeedBall bb{states[e.b].position, e.t, speed_bound(e.b, e.t, to), states[e.b].radius};
-      const double from = std::max(e.t, speed_earliest(ba, bb));
-      ++stats_.pair_checks;
-      ++stats_.rechecks;
-      watch.stop(local.bound);
-      if (from > to) continue;  // no contact possible in the rest of the common window
-      ++stats_.passed;
-      // The chunk: the time in which the pair's distance may change by `chunk` x the sum of
-      // their radii (at least the rest of the window when neither may move).
-      const double closing = ba.speed + bb.speed;
-      const double h = options_.chunk > 0.0 && closing > 0.0 ? options_.chunk * (ba.radius + bb.radius) / closing
-                                                              : std::numeric_limits<double>::infinity();
-      if (from < to && from >= e.t + h) {  // far enough: look again when they may touch
-        queue.push({from, Kind::Check, e.a, e.b, e.va, e.vb, e.since});
-        continue;
-      }
-      const double until = from + h < to ? from + h : to;
-      ++stats_.narrow_calls;
-      watch.start();
-      const ContactResult c = narrow_pair(e.a, e.b, from, until);
-      watch.stop(local.narrow);
-      // A contact ends the pair's window as a narrow call over [from, to] would have: its
-      // first contact there is this one.
-      if (c.found()) contacts.push_back({{oa, ob}, c, from, to});
-      else if (until < to) queue.push({until, Kind::Check, e.a, e.b, e.va, e.vb, e.since});
-      continue;
-    }
-    if (options_.refresh_bodies) {
-      batch.clear();
-      if (refine && e.t - wa.t0 > stale_age) batch.push_back(oa);
-      if (refine && e.t - wb.t0 > stale_age) batch.push_back(ob);
-      if (!batch.empty()) {
-        if (wrapped) refresh_wrapped(e.t, false);
-        else refresh(e.t);
-        continue;
-      }
-    } else if (refine && e.t - e.since > stale_age) {
-      // The pair's own bounds from now to the end of the common window.
-      watch.start();
-      state_at(e.a, e.t);
-      state_at(e.b, e.t);
-      PairTest r;
-      if (wrapped) {  // the two slots' paths as bodies 0 and 1 of the scratch instance
-        pair_states[0] = states[e.a];
-        pair_states[1] = states[e.b];
-        const Trajectories& pv = images.pair_view(e.a, e.b, e.t, to);
-        StepContext pc = ctx;
-        pc.t0 = e.t;
-        pc.t1 = to;
-        pc.start = pair_states;
-        pc.exact = knowledge_ == Knowledge::Exact ? &pv : nullptr;
-        scratch_->refresh(pc, pair_ids, scratch_boxes);
-        r = scratch_->test(0, 1);
-      } else {
-        pair_bodies[0] = e.a;
-        pair_bodies[1] = e.b;
-        ctx.t0 = e.t;
-        ctx.t1 = to;
-        ctx.start = states;
-        scratch_->refresh(ctx, pair_bodies, scratch_boxes);
-        r = scratch_->test(e.a, e.b);
-      }
-      stats_.refreshes += 2;
-      ++stats_.pair_checks;
-      watch.stop(local.bound);
-      if (r.possible()) {
-        ++stats_.passed;
-        queue.push({std::max(r.earliest, e.t), Kind::Check, e.a, e.b, e.va, e.vb, e.t});
-      }
-      continue;
-    }
     ++stats_.narrow_calls;
     watch.start();
     const ContactResult c = narrow_pair(e.a, e.b, e.t, to);

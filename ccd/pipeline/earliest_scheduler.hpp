@@ -7,16 +7,16 @@
 // State: every body i has a bound over its own window [w0_i, w1_i] (w1_i = min(w0_i + w_i,
 // T), or with `align` the next multiple of w_i after w0_i; w_i = dt, or with `reach` a
 // speed-adapted dt / 2^k), built from its state at w0_i
-// (Bound::refresh), and its box in the broad phase. A
-// priority queue holds two kinds of events, in time order (pair checks before expiries at
-// equal times):
+// (Bound::refresh), and its box in the broad phase. Two kinds of events, in time order
+// (pair checks before expiries at equal times; see below for when checks skip the queue):
 //  - expiry of body i at w1_i: all bodies expiring at that time refresh their bounds over
 //    their next windows, the broad phase updates only those (BroadPhase::update), and
 //    every pair it reports is tested (Bound::test over the common part of both windows);
 //    a pair that may touch gets a check at its `earliest`;
 //  - check of pair (a, b) at t: when the bounds the check came from are older than
 //    `stale` x dt, they are first rebuilt at t (Hubbard's refinement: a fresh bound is
-//    tight near t) and the pair re-tested, which gives a later check or none; otherwise
+//    tight near t) and the pair re-tested (the pair's own refined boxes first: disjoint
+//    boxes hold disjoint bounds), which gives a later check or none; otherwise
 //    the narrow phase runs from t to the end of the common window. The refinement builds
 //    the pair's own bounds from t to the end of the common window in a second instance of
 //    the bound (default: nothing else changes), or, with `refresh_bodies`, refreshes the
@@ -41,6 +41,14 @@
 // Coverage then tiles the common window with [t, e) (no contact possible) and narrow
 // chunks. A found contact ends the pair's window (reported over [e, w1], as one narrow
 // call from e to w1 would have found it).
+// Checks run as soon as they are made unless a refinement may refresh bodies
+// (`refresh_bodies` without `recheck`): a check made when a body's bound is built is due
+// before either body's window ends, and nothing it reads (the two bodies' bounds and
+// motion) changes before then, so running it at once gives what running it at its time
+// would. The checks a refresh makes run in rounds (every check decided, then the round's
+// narrow calls, then the checks those give), which takes stage times per round, not per
+// check; the priority queue then holds only the expiries. With refinements that refresh
+// bodies, checks are queued in time order as events.
 // Contacts are reported with the narrow call's interval [from, to]: the runner credits
 // the events of the pair that start in it (as a fixed step credits the events that start
 // in the step).
@@ -108,7 +116,8 @@ struct ScheduledContact {
 };
 
 struct ScheduleStats {
-  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls and speed re-checks)
+  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls, refinements whose
+                                   ///< refined boxes are disjoint, and speed re-checks)
   std::uint64_t rechecks = 0;      ///< of those, speed re-checks (ScheduleOptions::recheck)
   std::uint64_t passed = 0;        ///< of those, Possible
   std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
@@ -128,7 +137,7 @@ class EarliestScheduler {
                     const NarrowTable& table = narrow_table());
 
   /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
-  /// order the checks ran. Adds stage times to `*times` when given. Stops early (returns
+  /// order the narrow calls ran (a pair's contacts in time order). Adds stage times to `*times` when given. Stops early (returns
   /// false) when `*cancel` becomes true. A scene that wraps around (motion.periodic()) takes
   /// plain spheres only (std::invalid_argument with `options.rigid`).
   bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
