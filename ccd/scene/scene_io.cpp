@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 
 namespace ccd {
@@ -22,6 +23,11 @@ std::string shape_path(std::size_t i) { return "shapes[" + std::to_string(i) + "
 
 // Largest accepted | |q| - 1 | of an orientation as read; it is then normalised.
 constexpr double kQuaternionTolerance = 1e-6;
+// An orientation whose |q|^2 is within this of 1 is already a normalised quaternion (a
+// quaternion divided by its norm lands within a few units of rounding of 1) and is kept
+// bit for bit: normalising again would move its last bits, so a scene written from memory
+// (a generator's) would read back as a different scene, with another digest.
+constexpr double kNormalisedTolerance = 16.0 * std::numeric_limits<double>::epsilon();
 
 Boundary boundary_name(const Reader& r, const json& v, const std::string& p) {
   const std::string name = r.string(v, p);
@@ -230,7 +236,7 @@ Scene scene_from_json(const json& j, const std::string& file) {
       const double n = quat.norm();
       if (!(std::fabs(n - 1.0) <= kQuaternionTolerance))
         r.fail(op, "must be a unit quaternion (|q| is " + std::to_string(n) + ")");
-      quat.normalize();
+      if (!(std::fabs(quat.squaredNorm() - 1.0) <= kNormalisedTolerance)) quat.normalize();
       rigid.orientation = quat;
     }
     rigid.angular_velocity = r.optional_vec3(b, "angular_velocity", p);

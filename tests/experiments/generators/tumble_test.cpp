@@ -3,6 +3,7 @@
 #include "generator_test_support.hpp"
 
 #include <ccd/motion/rigid_motion.hpp>
+#include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/rigid_static_truth.hpp>
 
@@ -25,6 +26,7 @@ TEST_CASE("tumble: four shapes in turn above a floor polygon and a ramp", "[gene
   }
   // The scene is valid as written (the reader checks every field and the scenery).
   const ccd::Scene back = ccd::scene_from_json(ccd::scene_to_json(s), "tumble");
+  CHECK(ccd::scene_digest(back) == ccd::scene_digest(s));  // the same scene, read back
   CHECK(back.scenery.size() == 2);
   CHECK(back.has_non_spheres());
   // Gravity brings the bodies through the ramp or down to the floor within the horizon.
