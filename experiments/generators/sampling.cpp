@@ -12,9 +12,19 @@ std::size_t Random::index(std::size_t n) {
   return std::min(i, n == 0 ? 0 : n - 1);  // u n < n in exact arithmetic; guard the rounding
 }
 
+// The three draws of a try come in the order z, y, x (one statement each: the order of a
+// constructor's arguments is unspecified, and GCC, which made the published scenes,
+// evaluated them last to first).
+ccd::Vec3 Random::unit_cube() {
+  const double z = 2.0 * uniform() - 1.0;
+  const double y = 2.0 * uniform() - 1.0;
+  const double x = 2.0 * uniform() - 1.0;
+  return {x, y, z};
+}
+
 ccd::Vec3 Random::direction() {
   while (true) {
-    const ccd::Vec3 x(2.0 * uniform() - 1.0, 2.0 * uniform() - 1.0, 2.0 * uniform() - 1.0);
+    const ccd::Vec3 x = unit_cube();
     const double n2 = x.squaredNorm();
     if (n2 > 0.0 && n2 <= 1.0) return x / std::sqrt(n2);
   }
@@ -22,7 +32,7 @@ ccd::Vec3 Random::direction() {
 
 ccd::Vec3 Random::in_ball(double radius) {
   while (true) {
-    const ccd::Vec3 x(2.0 * uniform() - 1.0, 2.0 * uniform() - 1.0, 2.0 * uniform() - 1.0);
+    const ccd::Vec3 x = unit_cube();
     if (x.squaredNorm() > 1.0) continue;
     const ccd::Vec3 a = radius * x;
     if (a.norm() <= radius) return a;

@@ -23,8 +23,11 @@ class Random {
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
   /// floor(n u), in [0, n) for n >= 1. One output.
   std::size_t index(std::size_t n);
-  /// Unit vector, uniform on the sphere: rejection in the unit ball (three outputs per
-  /// try: x, y, z = 2u - 1, accepted when 0 < |x|^2 <= 1), then normalised.
+  /// A point uniform in the cube [-1, 1]^3: three outputs, drawn z first, then y, then x
+  /// (each 2u - 1).
+  ccd::Vec3 unit_cube();
+  /// Unit vector, uniform on the sphere: rejection in the unit ball (unit_cube() per try,
+  /// accepted when 0 < |x|^2 <= 1), then normalised.
   ccd::Vec3 direction();
   /// Uniform in the ball of radius `radius`: radius * x with x drawn as in direction()
   /// (0 accepted), retried until the computed norm is <= radius, so the bound holds in

@@ -103,7 +103,8 @@ ccd::Scene generate(const ParameterSet& p, Kind kind) {
       const double w = rng.uniform(-1.0, 1.0);
       Eigen::Quaterniond quat(w, q.x(), q.y(), q.z());
       r.orientation = quat.norm() > 1e-3 ? quat.normalized() : Eigen::Quaterniond::Identity();
-      r.angular_velocity = rng.direction() * rng.uniform(0.0, p.number("spin_max"));
+      const double spin = rng.uniform(0.0, p.number("spin_max"));  // the rate, then the axis
+      r.angular_velocity = rng.direction() * spin;
       if (free) r.spin = ccd::SpinModel::Free;
     }
     scene.add_rigid_body(b, r);

@@ -68,15 +68,19 @@ ccd::Scene generate_tumble(const ParameterSet& p) {
     b.radius = shapes[i % shapes.size()].enclosing_radius();
     b.position = placement.place(b.radius, [&] {
       // Above the ramp's top edge (3/4 side), below the ceiling.
-      return ccd::Vec3(rng.uniform(b.radius, side - b.radius), rng.uniform(0.75 * side + b.radius, side - b.radius),
-                       rng.uniform(b.radius, side - b.radius));
+      // z, then y, then x (one statement each: the order of arguments is unspecified).
+      const double z = rng.uniform(b.radius, side - b.radius);
+      const double y = rng.uniform(0.75 * side + b.radius, side - b.radius);
+      const double x = rng.uniform(b.radius, side - b.radius);
+      return ccd::Vec3(x, y, z);
     });
     b.velocity = rng.in_ball(p.number("speed_max"));
     const ccd::Vec3 q = rng.in_ball(1.0);
     const double w = rng.uniform(-1.0, 1.0);
     const Eigen::Quaterniond quat(w, q.x(), q.y(), q.z());
     r.orientation = quat.norm() > 1e-3 ? quat.normalized() : Eigen::Quaterniond::Identity();
-    r.angular_velocity = rng.direction() * rng.uniform(0.0, p.number("spin_max"));
+    const double spin = rng.uniform(0.0, p.number("spin_max"));  // the rate, then the axis
+    r.angular_velocity = rng.direction() * spin;
     scene.add_rigid_body(b, r);
   }
   return scene;
