@@ -7,8 +7,11 @@
 // instants outside every event must be out of contact.
 #include <ccd/truth/ground_truth.hpp>
 
+#include <tests/ccd/truth/reference_position.hpp>
+
 #include <catch2/catch.hpp>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -16,51 +19,12 @@ namespace {
 
 using Q = __float128;
 
-struct QVec {
-  Q x[3];
-};
-
-// Exact-data position of body b at time t, in quadruple precision.
-QVec position_q(const ccd::Scene& s, const ccd::Body& b, double t) {
-  Q p[3], v[3], a[3];
-  for (int k = 0; k < 3; ++k) {
-    p[k] = b.position[k];
-    v[k] = b.velocity[k];
-    a[k] = Q(b.acceleration[k]) + Q(s.gravity[k]);
-  }
-  // Acceleration and velocity changes merged in time order (at equal times, both).
-  Q t0 = 0;
-  std::size_t ia = 0, iv = 0;
-  while (true) {
-    const double ta = ia < b.acceleration_changes.size() ? b.acceleration_changes[ia].t : INFINITY;
-    const double tv = iv < b.velocity_changes.size() ? b.velocity_changes[iv].t : INFINITY;
-    const double tc = std::min(ta, tv);
-    if (!(tc < t)) break;
-    const Q dt = Q(tc) - t0;
-    for (int k = 0; k < 3; ++k) {
-      p[k] += v[k] * dt + a[k] * dt * dt / 2;
-      v[k] += a[k] * dt;
-    }
-    if (ta == tc) {
-      for (int k = 0; k < 3; ++k) a[k] = Q(b.acceleration_changes[ia].acceleration[k]) + Q(s.gravity[k]);
-      ++ia;
-    }
-    if (tv == tc) {
-      for (int k = 0; k < 3; ++k) v[k] = b.velocity_changes[iv].velocity[k];
-      ++iv;
-    }
-    t0 = tc;
-  }
-  const Q dt = Q(t) - t0;
-  QVec r;
-  for (int k = 0; k < 3; ++k) r.x[k] = p[k] + v[k] * dt + a[k] * dt * dt / 2;
-  return r;
-}
+using QVec = std::array<Q, 3>;
 
 Q f_q(const ccd::Scene& s, std::uint32_t i, std::uint32_t j, double t) {
-  const QVec a = position_q(s, s.bodies[i], t), b = position_q(s, s.bodies[j], t);
+  const QVec a = ccd::test::reference_position<Q>(s, s.bodies[i], t), b = ccd::test::reference_position<Q>(s, s.bodies[j], t);
   Q d2 = 0;
-  for (int k = 0; k < 3; ++k) d2 += (b.x[k] - a.x[k]) * (b.x[k] - a.x[k]);
+  for (int k = 0; k < 3; ++k) d2 += (b[k] - a[k]) * (b[k] - a[k]);
   const Q R = Q(s.bodies[i].radius) + Q(s.bodies[j].radius);
   return d2 - R * R;
 }

@@ -12,6 +12,7 @@
 #include <ccd/truth/static_truth.hpp>
 
 #include <tests/ccd/scene/body_builder.hpp>
+#include <tests/ccd/truth/reference_position.hpp>
 
 #include <catch2/catch.hpp>
 #include <gmpxx.h>
@@ -37,38 +38,6 @@ QVec sub(const QVec& a, const QVec& b) { return {a[0] - b[0], a[1] - b[1], a[2] 
 Q dot(const QVec& a, const QVec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 QVec cross(const QVec& a, const QVec& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-
-// Exact position of body b at time t (no walls).
-QVec position_q(const Scene& s, const ccd::Body& b, double t) {
-  QVec p = q_of(b.position), v = q_of(b.velocity), a;
-  for (int k = 0; k < 3; ++k) a[k] = Q(b.acceleration[k]) + Q(s.gravity[k]);
-  Q t0 = 0;
-  std::size_t ia = 0, iv = 0;
-  while (true) {
-    const double ta = ia < b.acceleration_changes.size() ? b.acceleration_changes[ia].t : INFINITY;
-    const double tv = iv < b.velocity_changes.size() ? b.velocity_changes[iv].t : INFINITY;
-    const double tc = std::min(ta, tv);
-    if (!(tc < t)) break;
-    const Q dt = Q(tc) - t0;
-    for (int k = 0; k < 3; ++k) {
-      p[k] += v[k] * dt + a[k] * dt * dt / 2;
-      v[k] += a[k] * dt;
-    }
-    if (ta == tc) {
-      for (int k = 0; k < 3; ++k) a[k] = Q(b.acceleration_changes[ia].acceleration[k]) + Q(s.gravity[k]);
-      ++ia;
-    }
-    if (tv == tc) {
-      v = q_of(b.velocity_changes[iv].velocity);
-      ++iv;
-    }
-    t0 = tc;
-  }
-  const Q dt = Q(t) - t0;
-  QVec r;
-  for (int k = 0; k < 3; ++k) r[k] = p[k] + v[k] * dt + a[k] * dt * dt / 2;
-  return r;
 }
 
 // Squared distance from c to the polygon (the plane through V_0 with the area normal),
@@ -105,7 +74,7 @@ Q gap_q(const QVec& c, const ccd::StaticPolygon& poly, double r) {
 }
 
 Q gap_at(const Scene& s, std::uint32_t b, std::uint32_t j, double t) {
-  return gap_q(position_q(s, s.bodies[b], t), s.scenery[j], s.bodies[b].radius);
+  return gap_q(ccd::test::reference_position<Q>(s, s.bodies[b], t), s.scenery[j], s.bodies[b].radius);
 }
 
 // Checks every event of the scene's static truth against the exact reference and
