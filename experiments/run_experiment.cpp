@@ -155,12 +155,12 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   std::vector<ccd::ContactEvent> truth_events;
   if (options.truth) {
     truth_events = options.truth->events;
-    for (const ccd::EventError& x : options.truth->errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+    truth_error = ccd::largest_error(options.truth->errors);
   } else if (rigid) {
     ccd::RigidTruthOptions ropts;
     ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
     ccd::RigidTruthResult r = ccd::compute_rigid_truth(*rigid, ropts);
-    for (const ccd::EventError& x : r.errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+    truth_error = ccd::largest_error(r.errors);
     truth_events = std::move(r.events);
   } else {
     truth_events = ccd::compute_truth(traj, topts);
@@ -173,13 +173,12 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   if (!scene.scenery.empty()) {
     if (options.truth && options.truth->has_scenery) {
       static_events = options.truth->static_events;
-      for (const ccd::EventError& x : options.truth->static_errors)
-        truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+      truth_error = std::max(truth_error, ccd::largest_error(options.truth->static_errors));
     } else if (rigid) {
       ccd::RigidTruthOptions ropts;
       ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
       ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(*rigid, scene.scenery, ropts);
-      for (const ccd::EventError& x : r.errors) truth_error = std::max({truth_error, x.enter_error, x.exit_error});
+      truth_error = std::max(truth_error, ccd::largest_error(r.errors));
       static_events = std::move(r.events);
     } else {
       static_events = ccd::compute_static_truth(traj, scene.scenery, static_cast<unsigned>(std::max(0, options.threads)));

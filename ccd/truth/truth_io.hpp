@@ -28,7 +28,9 @@
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,14 @@ struct EventError {
   bool grazing = false;
   bool operator==(const EventError&) const = default;
 };
+
+/// The largest enter or exit error of `errors` (0 when there are none): how far a
+/// certified event's times may be from the exact ones, the slack of matching against it.
+inline double largest_error(std::span<const EventError> errors) {
+  double e = 0.0;
+  for (const EventError& x : errors) e = std::max({e, x.enter_error, x.exit_error});
+  return e;
+}
 
 struct TruthFile {
   double horizon = 0.0;

@@ -141,8 +141,7 @@ TEST_CASE("obb_sat misses no contact of the certified rigid truth", "[bounds][ob
     ccd::test::RigidStep st(c.scene);
     const ccd::RigidTruthResult rt = ccd::compute_rigid_truth(st.rigid);
     REQUIRE(rt.events.size() >= 3);
-    double err = 0.0;
-    for (const ccd::EventError& e : rt.errors) err = std::max({err, e.enter_error, e.exit_error});
+    const double err = ccd::largest_error(rt.errors);
     // Bound level: the pair passes in the step that holds its enter time, no later.
     for (const int m : {1, 4, 7}) {
       ccd::ObbSatBound bound(m);

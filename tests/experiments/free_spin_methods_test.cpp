@@ -100,8 +100,7 @@ TEST_CASE("every method on freely tumbling bodies: zero misses for conservative 
     for (const ccd::RotationPiece& p : motion.rotations().pieces(i)) tumbles = tumbles || !p.constant_spin();
   REQUIRE(tumbles);
   const ccd::RigidTruthResult rt = ccd::compute_rigid_truth(motion);
-  double err = 0.0;
-  for (const ccd::EventError& e : rt.errors) err = std::max({err, e.enter_error, e.exit_error});
+  const double err = ccd::largest_error(rt.errors);
   const ccdlab::TruthIndex truth(rt.events);
   ccdlab::RunInput in;
   in.scene = &c.scene;

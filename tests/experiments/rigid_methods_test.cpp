@@ -87,8 +87,7 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   const ccd::Trajectories traj(c.scene);
   const ccd::RigidMotion motion(c.scene, traj);
   const ccd::RigidTruthResult rt = ccd::compute_rigid_truth(motion);
-  double err = 0.0;
-  for (const ccd::EventError& e : rt.errors) err = std::max({err, e.enter_error, e.exit_error});
+  const double err = ccd::largest_error(rt.errors);
   const ccdlab::TruthIndex truth(rt.events);
   ccdlab::RunInput in;
   in.scene = &c.scene;

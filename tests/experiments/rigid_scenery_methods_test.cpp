@@ -30,9 +30,7 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
   const ccd::RigidTruthResult body_truth = ccd::compute_rigid_truth(motion, options);
   const ccd::RigidStaticTruthResult st = ccd::compute_rigid_static_truth(motion, scene.scenery, options);
   REQUIRE(!st.events.empty());
-  double err = 0.0;
-  for (const ccd::EventError& e : body_truth.errors) err = std::max({err, e.enter_error, e.exit_error});
-  for (const ccd::EventError& e : st.errors) err = std::max({err, e.enter_error, e.exit_error});
+  const double err = std::max(ccd::largest_error(body_truth.errors), ccd::largest_error(st.errors));
   const ccdlab::TruthIndex truth(body_truth.events);
   ccdlab::RunInput in;
   in.scene = &scene;

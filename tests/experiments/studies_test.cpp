@@ -46,7 +46,7 @@ struct RigidStudy {
   RigidStudy(const std::string& generator, const json& params)
       : scene(ccdlab::generate_scene(generator, params)), traj(scene), motion(scene, traj),
         rt(ccd::compute_rigid_truth(motion)), truth(rt.events) {
-    for (const ccd::EventError& e : rt.errors) error = std::max({error, e.enter_error, e.exit_error});
+    error = ccd::largest_error(rt.errors);
   }
   ccdlab::RunRecord run(const std::string& method, double dt) const {
     ccdlab::RunInput in;

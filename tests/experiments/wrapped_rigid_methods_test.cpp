@@ -23,8 +23,7 @@ void check_every_method(const ccd::Scene& scene, double dt, const std::string& w
   const ccd::Trajectories traj(scene);
   const ccd::RigidMotion motion(scene, traj);
   const ccd::RigidTruthResult rt = ccd::compute_rigid_truth(motion);
-  double err = 0.0;
-  for (const ccd::EventError& e : rt.errors) err = std::max({err, e.enter_error, e.exit_error});
+  const double err = ccd::largest_error(rt.errors);
   const ccdlab::TruthIndex truth(rt.events);
   ccdlab::RunInput in;
   in.scene = &scene;
