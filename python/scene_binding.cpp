@@ -131,7 +131,9 @@ void bind_scene(py::module_& m) {
       [](const std::string& path) {
         return run_interruptible([&]() { return std::make_shared<PyScene>(ccd::load_scene(path), path); });
       },
-      py::arg("path"), "Reads and validates a ccdlab-scene/1 file (errors: ccdlab.InputError)");
+      py::arg("path"),
+      "Reads and validates a scene file: JSON (ccdlab-scene/1 or /2) or binary (ccdlab-scene-binary/1, ccdlab pack) "
+      "(errors: ccdlab.InputError)");
   m.def(
       "scene_from_json",
       [](const py::object& j) {

@@ -4,6 +4,7 @@
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_binary.hpp>
 #include <ccd/shape/mass_properties.hpp>
 
 #include <algorithm>
@@ -375,41 +376,47 @@ void validate_scene(const Scene& s, const std::string& file) {
       r.fail(f, std::string(what) + " is " + text + " m, above the limit " + limit + " m");
     }
   };
+  auto within = [](double x) { return std::isfinite(x) && std::fabs(x) <= kMaxSceneMagnitude; };
+  auto within3 = [&](const Vec3& v) { return within(v.x()) && within(v.y()) && within(v.z()); };
+  static const RigidBody kDefaultRigid{};
   if (!s.rigid.empty() && s.rigid.size() != s.bodies.size())
     r.fail("bodies", "the shape and spin table has " + std::to_string(s.rigid.size()) + " entries for " +
                          std::to_string(s.bodies.size()) + " bodies");
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
-    const std::string p = body_path(i);
-    const RigidBody rb = s.rigid_body(i);
+    // Field names are built only for a message (a million bodies would otherwise build tens
+    // of millions of strings no message uses): each check tests first, then names.
+    auto p = [i] { return body_path(i); };
+    const RigidBody& rb = s.rigid.empty() ? kDefaultRigid : s.rigid[i];
     if (rb.shape != kNoShape) {
       if (rb.shape < 0 || static_cast<std::size_t>(rb.shape) >= s.shapes.size())
-        r.fail(p + ".shape", "no such shape (index " + std::to_string(rb.shape) + ")");
+        r.fail(p() + ".shape", "no such shape (index " + std::to_string(rb.shape) + ")");
       if (b.radius != s.shapes[static_cast<std::size_t>(rb.shape)].enclosing_radius())
-        r.fail(p + ".radius", "must be the shape's enclosing radius");
+        r.fail(p() + ".radius", "must be the shape's enclosing radius");
     }
-    magnitude(b.radius, p + ".radius");
-    if (b.radius <= 0.0) r.fail(p + ".radius", "must be > 0");
-    for (int k = 0; k < 4; ++k) magnitude(rb.orientation.coeffs()[k], p + ".orientation");
-    if (!(std::fabs(rb.orientation.squaredNorm() - 1.0) <= 1e-12)) r.fail(p + ".orientation", "must be a unit quaternion");
-    finite3(rb.angular_velocity, p + ".angular_velocity");
+    if (!within(b.radius)) magnitude(b.radius, p() + ".radius");
+    if (b.radius <= 0.0) r.fail(p() + ".radius", "must be > 0");
+    for (int k = 0; k < 4; ++k)
+      if (!within(rb.orientation.coeffs()[k])) magnitude(rb.orientation.coeffs()[k], p() + ".orientation");
+    if (!(std::fabs(rb.orientation.squaredNorm() - 1.0) <= 1e-12)) r.fail(p() + ".orientation", "must be a unit quaternion");
+    if (!within3(rb.angular_velocity)) finite3(rb.angular_velocity, p() + ".angular_velocity");
     if (rb.mass) {
-      magnitude(*rb.mass, p + ".mass");
-      if (!(*rb.mass > 0.0)) r.fail(p + ".mass", "must be > 0");
-      if (rb.density) r.fail(p + ".density", "not allowed with mass (give one of them)");
+      magnitude(*rb.mass, p() + ".mass");
+      if (!(*rb.mass > 0.0)) r.fail(p() + ".mass", "must be > 0");
+      if (rb.density) r.fail(p() + ".density", "not allowed with mass (give one of them)");
     }
     if (rb.density) {
-      magnitude(*rb.density, p + ".density");
-      if (!(*rb.density > 0.0)) r.fail(p + ".density", "must be > 0");
+      magnitude(*rb.density, p() + ".density");
+      if (!(*rb.density > 0.0)) r.fail(p() + ".density", "must be > 0");
     }
     if (rb.inertia) {
       const Vec3& I = *rb.inertia;
-      finite3(I, p + ".inertia");
+      finite3(I, p() + ".inertia");
       for (int k = 0; k < 3; ++k)
-        if (!(I[k] > 0.0)) r.fail(p + ".inertia[" + std::to_string(k) + "]", "must be > 0 (a principal moment)");
+        if (!(I[k] > 0.0)) r.fail(p() + ".inertia[" + std::to_string(k) + "]", "must be > 0 (a principal moment)");
       for (int k = 0; k < 3; ++k)
         if (!(I[(k + 1) % 3] + I[(k + 2) % 3] >= I[k]))
-          r.fail(p + ".inertia", "violates the triangle inequality: inertia[" + std::to_string(k) +
+          r.fail(p() + ".inertia", "violates the triangle inequality: inertia[" + std::to_string(k) +
                                      "] must be <= the sum of the other two moments");
     }
     if (rb.spin == SpinModel::Free && rb.shape != kNoShape && !rb.inertia) {
@@ -420,17 +427,18 @@ void validate_scene(const Scene& s, const std::string& file) {
         if (!(c.norm() <= 1e-9 * sh.enclosing_radius())) {
           char text[96];
           std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", c.x(), c.y(), c.z());
-          r.fail(p + ".spin", "free spin needs the hull's centre of mass at its origin; \"" + sh.name + "\" has it at " +
+          r.fail(p() + ".spin", "free spin needs the hull's centre of mass at its origin; \"" + sh.name + "\" has it at " +
                                   text + " (shift its points, or give inertia)");
         }
       }
     }
-    finite3(b.position, p + ".position");
-    finite3(b.velocity, p + ".velocity");
-    finite3(b.acceleration, p + ".acceleration");
-    reach(b.velocity.norm() * T, p + ".velocity", "|velocity| * horizon");
-    reach((b.acceleration + s.gravity).norm() * (0.5 * T * T), p + ".acceleration",
-          "|acceleration + gravity| * horizon^2 / 2");
+    if (!within3(b.position)) finite3(b.position, p() + ".position");
+    if (!within3(b.velocity)) finite3(b.velocity, p() + ".velocity");
+    if (!within3(b.acceleration)) finite3(b.acceleration, p() + ".acceleration");
+    if (const double d = b.velocity.norm() * T; !(d <= kMaxSceneMagnitude))
+      reach(d, p() + ".velocity", "|velocity| * horizon");
+    if (const double d = (b.acceleration + s.gravity).norm() * (0.5 * T * T); !(d <= kMaxSceneMagnitude))
+      reach(d, p() + ".acceleration", "|acceleration + gravity| * horizon^2 / 2");
     if (s.box) {
       for (int a = 0; a < 3; ++a) {
         if (s.box->wraps(a)) {
@@ -439,62 +447,65 @@ void validate_scene(const Scene& s, const std::string& file) {
           // image of another body can be within contact distance (ccd/scene/periodic.hpp).
           // A shaped body's radius is its enclosing radius: the same rule holds for it.
           if (b.position[a] < s.box->min[a] || b.position[a] > s.box->max[a])
-            r.fail(p + ".position[" + std::to_string(a) + "]",
+            r.fail(p() + ".position[" + std::to_string(a) + "]",
                    "centre must lie in [box.min, box.max] on a wrapped axis");
           if (!(4.0 * b.radius <= s.box->max[a] - s.box->min[a])) {
             if (rb.shape != kNoShape)
-              r.fail(p + ".shape", "box edge on wrapped axis " + std::to_string(a) +
+              r.fail(p() + ".shape", "box edge on wrapped axis " + std::to_string(a) +
                                        " must be at least twice the shape's enclosing diameter (4 x enclosing radius)");
-            r.fail(p + ".radius", "box edge on wrapped axis " + std::to_string(a) +
+            r.fail(p() + ".radius", "box edge on wrapped axis " + std::to_string(a) +
                                       " must be at least twice the body's diameter (4 x radius)");
           }
           continue;
         }
         if (b.position[a] - b.radius < s.box->min[a] || b.position[a] + b.radius > s.box->max[a])
-          r.fail(p + ".position", "body must start inside the box (centre at least radius from every wall)");
+          r.fail(p() + ".position", "body must start inside the box (centre at least radius from every wall)");
         // A body as wide as the box on an axis touches both walls at once: it cannot move
         // along that axis (it would reflect at both walls in zero time and leave the box).
         // Wall planes as the trajectory takes them: the exact sums, compared exactly.
         const Dd room = two_sum(s.box->max[a], -b.radius) - two_sum(s.box->min[a], b.radius);
         if (!(room.value() > 0.0) && b.velocity[a] != 0.0)
-          r.fail(p + ".velocity[" + std::to_string(a) + "]",
+          r.fail(p() + ".velocity[" + std::to_string(a) + "]",
                  "must be 0: the body fills the box on this axis (no room to move between the walls)");
       }
     }
     double prev = 0.0;
     for (std::size_t k = 0; k < b.acceleration_changes.size(); ++k) {
       const AccelerationChange& c = b.acceleration_changes[k];
-      const std::string kp = p + ".acceleration_changes[" + std::to_string(k) + "]";
+      auto kp = [&] { return p() + ".acceleration_changes[" + std::to_string(k) + "]"; };
       if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
-        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
-      finite3(c.acceleration, kp + ".acceleration");
-      reach((c.acceleration + s.gravity).norm() * (0.5 * T * T), kp + ".acceleration",
-            "|acceleration + gravity| * horizon^2 / 2");
+        r.fail(kp() + ".t", "must increase strictly and lie in (0, horizon)");
+      if (!within3(c.acceleration)) finite3(c.acceleration, kp() + ".acceleration");
+      if (const double d = (c.acceleration + s.gravity).norm() * (0.5 * T * T); !(d <= kMaxSceneMagnitude))
+        reach(d, kp() + ".acceleration", "|acceleration + gravity| * horizon^2 / 2");
       prev = c.t;
     }
     prev = 0.0;
     for (std::size_t k = 0; k < b.velocity_changes.size(); ++k) {
       const VelocityChange& c = b.velocity_changes[k];
-      const std::string kp = p + ".velocity_changes[" + std::to_string(k) + "]";
+      auto kp = [&] { return p() + ".velocity_changes[" + std::to_string(k) + "]"; };
       if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
-        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
-      finite3(c.velocity, kp + ".velocity");
-      reach(c.velocity.norm() * T, kp + ".velocity", "|velocity| * horizon");
+        r.fail(kp() + ".t", "must increase strictly and lie in (0, horizon)");
+      if (!within3(c.velocity)) finite3(c.velocity, kp() + ".velocity");
+      if (const double d = c.velocity.norm() * T; !(d <= kMaxSceneMagnitude)) reach(d, kp() + ".velocity", "|velocity| * horizon");
       prev = c.t;
     }
     prev = 0.0;
     for (std::size_t k = 0; k < rb.angular_velocity_changes.size(); ++k) {
       const AngularVelocityChange& c = rb.angular_velocity_changes[k];
-      const std::string kp = p + ".angular_velocity_changes[" + std::to_string(k) + "]";
+      auto kp = [&] { return p() + ".angular_velocity_changes[" + std::to_string(k) + "]"; };
       if (!std::isfinite(c.t) || c.t <= prev || c.t >= s.horizon)
-        r.fail(kp + ".t", "must increase strictly and lie in (0, horizon)");
-      finite3(c.angular_velocity, kp + ".angular_velocity");
+        r.fail(kp() + ".t", "must increase strictly and lie in (0, horizon)");
+      if (!within3(c.angular_velocity)) finite3(c.angular_velocity, kp() + ".angular_velocity");
       prev = c.t;
     }
   }
 }
 
-Scene load_scene(const std::string& path) { return scene_from_json(read_json_file(path), path); }
+Scene load_scene(const std::string& path) {
+  if (is_binary_scene_file(path)) return load_binary_scene(path);
+  return scene_from_json(read_json_file(path), path);
+}
 
 json scene_to_json(const Scene& s) {
   auto v = [](const Vec3& x) { return json::array({x.x(), x.y(), x.z()}); };

@@ -36,7 +36,9 @@ inline constexpr const char* kSceneFormatV1 = "ccdlab-scene/1";
 
 /// Parses a scene from JSON; `file` is used only in error messages.
 Scene scene_from_json(const nlohmann::json& j, const std::string& file);
-/// Reads and validates a scene file. Throws InputError.
+/// Reads and validates a scene file: JSON, or the binary companion format when the file
+/// starts with its magic (ccd/scene/scene_binary.hpp; a pipe or device is read as JSON).
+/// Throws InputError.
 Scene load_scene(const std::string& path);
 /// Checks the invariants listed above on an in-memory scene. Throws InputError.
 void validate_scene(const Scene& scene, const std::string& file);

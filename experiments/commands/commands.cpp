@@ -19,11 +19,12 @@ extern const Command kClothCommand;
 extern const Command kViewCommand;
 extern const Command kPosesCommand;
 extern const Command kImportCommand;
+extern const Command kPackCommand;
 
 std::span<const Command> commands() {
   static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
                                   kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand,
-                                  kViewCommand,  kPosesCommand,   kImportCommand};
+                                  kViewCommand,  kPosesCommand,   kImportCommand, kPackCommand};
   return table;
 }
 

@@ -10,6 +10,7 @@
 #include <ccd/io/json_reader.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
+#include <ccd/scene/scene_binary.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/truth_io.hpp>
 
@@ -70,7 +71,9 @@ int run_view(std::span<const std::string> args) {
     if (!results_path.empty()) inputs.push_back(results_path);
     if (!truth_path.empty()) inputs.push_back(truth_path);
     ccd::OutputFile output(out_path, inputs);
-    const nlohmann::json scene_json = ccd::read_json_file(scene_path);
+    // A binary scene (ccd/scene/scene_binary.hpp) is a body scene; anything else is JSON.
+    const bool binary = ccd::is_binary_scene_file(scene_path);
+    const nlohmann::json scene_json = binary ? nlohmann::json() : ccd::read_json_file(scene_path);
     const nlohmann::json* format = scene_json.is_object() && scene_json.contains("format") ? &scene_json["format"] : nullptr;
     nlohmann::json data;
     if (format && *format == "ccdlab-cloth-frames/1") {
@@ -82,7 +85,7 @@ int run_view(std::span<const std::string> args) {
                             "a cloth scene is shown from its frames: run `ccdlab cloth " + scene_path +
                                 " -o FRAMES.json` and view FRAMES.json");
     } else {
-      const ccd::Scene scene = ccd::scene_from_json(scene_json, scene_path);
+      const ccd::Scene scene = binary ? ccd::load_scene(scene_path) : ccd::scene_from_json(scene_json, scene_path);
       ViewInputs in;
       in.scene_file = scene_path;
       if (!results_path.empty()) {
