@@ -26,19 +26,22 @@ constexpr int kMaxWindowHalvings = 10;
 
 enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
 
-// The `polygon` of a body-body check (a static check names its polygon; its b == a).
-constexpr std::uint32_t kNoPolygon = std::numeric_limits<std::uint32_t>::max();
+// A static check (body a against a polygon of the scenery) carries the polygon in b with
+// this bit set, so checks and jobs keep their size; bodies, slots and polygons stay below
+// it (run() and set_scenery() refuse more).
+constexpr std::uint32_t kStaticBit = 0x80000000u;
+constexpr bool is_static(std::uint32_t b) { return (b & kStaticBit) != 0; }
+constexpr std::uint32_t static_b(std::uint32_t polygon) { return polygon | kStaticBit; }
+constexpr std::uint32_t polygon_of(std::uint32_t b) { return b & ~kStaticBit; }
 
 struct Event {
   double t;
   Kind kind;
   std::uint32_t a, b;    // a pair (a < b; in a wrapped scene two slots, a's owner < b's), or the
-                         // expiring body in a (b == a), or a static check's body (b == a)
-  std::uint32_t polygon;  // a static check: the polygon (kNoPolygon: a body-body check or an expiry)
+                         // expiring body in a (b == a), or a static check's body and static_b(polygon)
   std::uint64_t va, vb;  // the bodies' version stamps when the event was queued
   double since;          // a check: when the bounds it came from start
 };
-static_assert(sizeof(Event) == 48, "a queued event stays 48 bytes (the polygon fills padding)");
 
 // Min-heap order: earlier first; at equal times checks before expiries, then by bodies
 // (a deterministic order, whatever the insertion order).
@@ -47,8 +50,7 @@ struct Later {
     if (x.t != y.t) return x.t > y.t;
     if (x.kind != y.kind) return x.kind > y.kind;
     if (x.a != y.a) return x.a > y.a;
-    if (x.b != y.b) return x.b > y.b;
-    return x.polygon > y.polygon;
+    return x.b > y.b;
   }
 };
 
@@ -58,14 +60,12 @@ struct Check {
   std::uint32_t a, b;  // as in Event
   double since;        // when the bounds it came from start
   double to;           // the end of the common window
-  std::uint32_t polygon;  // as in Event
 };
 
 // A narrow call over [from, until] in the pair's common window ending at `to`.
 struct Job {
   std::uint32_t a, b;
   double from, until, to;
-  std::uint32_t polygon;  // as in Event
 };
 
 // Adds the time since `from` to `into` when timing is on.
@@ -105,6 +105,7 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
 }
 
 void EarliestScheduler::set_scenery(std::span<const StaticPolygon> polygons) {
+  if (polygons.size() >= kStaticBit) throw std::invalid_argument("the earliest scheduler takes fewer than 2^31 polygons");
   scenery_ = polygons;
   static_index_ = StaticIndex::from_polygons(polygons);
 }
@@ -118,6 +119,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     throw std::invalid_argument("the earliest scheduler takes plain spheres only in a scene that wraps around");
   if (wrapped && !scenery_.empty())
     throw std::invalid_argument("the earliest scheduler takes no scenery in a scene that wraps around");
+  if (motion.size() >= kStaticBit) throw std::invalid_argument("the earliest scheduler takes fewer than 2^31 bodies");
   stats_ = {};
   contacts.clear();
   static_contacts_.clear();
@@ -215,8 +217,8 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
         ++stats_.passed;
         const Window w = common_window(bound_->window(q.x), bound_->window(q.y));
         const double t = std::max(r.earliest, now);
-        if (inline_checks) pending.push_back({t, q.x, q.y, w.t0, w.t1, kNoPolygon});
-        else queue.push({t, Kind::Check, q.x, q.y, kNoPolygon, version[q.a], version[q.b], w.t0});
+        if (inline_checks) pending.push_back({t, q.x, q.y, w.t0, w.t1});
+        else queue.push({t, Kind::Check, q.x, q.y, version[q.a], version[q.b], w.t0});
       }
       return;
     }
@@ -227,8 +229,8 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       ++stats_.passed;
       const Window w = common_window(bound_->window(p.a), bound_->window(p.b));
       const double t = std::max(r.earliest, now);
-      if (inline_checks) pending.push_back({t, p.a, p.b, w.t0, w.t1, kNoPolygon});
-      else queue.push({t, Kind::Check, p.a, p.b, kNoPolygon, version[p.a], version[p.b], w.t0});
+      if (inline_checks) pending.push_back({t, p.a, p.b, w.t0, w.t1});
+      else queue.push({t, Kind::Check, p.a, p.b, version[p.a], version[p.b], w.t0});
     }
   };
   // Scenery: the static index's polygons for the boxes of `bodies` (bounds just built, from
@@ -256,13 +258,13 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       ++stats_.static_passed;
       const Window w = bound_->window(i);
       const double t = std::max(r.earliest, now);
-      if (inline_checks) pending.push_back({t, i, i, w.t0, w.t1, p});
-      else queue.push({t, Kind::Check, i, i, p, version[i], version[i], w.t0});
+      if (inline_checks) pending.push_back({t, i, static_b(p), w.t0, w.t1});
+      else queue.push({t, Kind::Check, i, static_b(p), version[i], version[i], w.t0});
     }
     watch.stop(local.bound);
   };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
-    if (w1 < T) queue.push({w1, Kind::Expiry, i, i, kNoPolygon, version[i], version[i], w1});
+    if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
   };
   // A bound on body i's speed over [t, t1] (state at t set), as the bound's knowledge
   // allows: the exact pieces' largest speed, or |v(t)| + A (t1 - t) (walls keep the speed).
@@ -460,12 +462,13 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     return rigid ? table_->find(rigid->kind(x), rigid->kind(y))(in, x, y) : narrow_(in, x, y);
   };
 
-  // A due static check at c.t (inline mode): body c.a against polygon c.polygon over the
+  // A due static check at c.t (inline mode): body c.a against polygon_of(c.b) over the
   // rest of the body's window, as a pair check below with one moving body.
   const auto decide_static = [&](const Check& c) {
     const double to = c.to;
     const std::uint32_t i = c.a;
-    const StaticPolygon& polygon = scenery_[c.polygon];
+    const std::uint32_t p = polygon_of(c.b);
+    const StaticPolygon& polygon = scenery_[p];
     if (options_.recheck) {
       // From the body's state now: its distance to the polygon (a static convex set) and
       // its speed bound give the earliest possible contact (bounds/speed_earliest.hpp).
@@ -481,10 +484,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const double h = options_.chunk > 0.0 && ball.speed > 0.0 ? options_.chunk * ball.radius / ball.speed
                                                                   : std::numeric_limits<double>::infinity();
       if (from < to && from >= c.t + h) {
-        next.push_back({from, i, i, c.since, to, c.polygon});
+        next.push_back({from, i, c.b, c.since, to});
         return;
       }
-      jobs.push_back({i, i, from, from + h < to ? from + h : to, to, c.polygon});
+      jobs.push_back({i, c.b, from, from + h < to ? from + h : to, to});
       return;
     }
     if (refine && c.t - c.since > stale_age) {
@@ -496,23 +499,23 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       ctx.start = states;
       if (scratch_boxes.size() != n) scratch_boxes.resize(n);
       scratch_->refresh(ctx, std::span<const std::uint32_t>(pair_bodies, 1), scratch_boxes);
-      const PairTest r = scratch_->test_static(i, scratch_boxes[i], polygon, static_index_.box(c.polygon));
+      const PairTest r = scratch_->test_static(i, scratch_boxes[i], polygon, static_index_.box(p));
       ++stats_.refreshes;
       ++stats_.static_checks;
       if (r.possible()) {
         ++stats_.static_passed;
-        next.push_back({std::max(r.earliest, c.t), i, i, c.t, to, c.polygon});
+        next.push_back({std::max(r.earliest, c.t), i, c.b, c.t, to});
       }
       return;
     }
-    jobs.push_back({i, i, c.t, to, to, c.polygon});
+    jobs.push_back({i, c.b, c.t, to, to});
   };
   // A due check at c.t (inline mode; c.a, c.b slots when wrapped): the speed re-check or the
   // refinement, which give a later check (into `next`), a narrow call (into `jobs`) or
   // nothing. Reads only the two bodies' bounds and motion, which no refresh changes before
   // the check is due (both windows end at or after c.t).
   const auto decide = [&](const Check& c) {
-    if (c.polygon != kNoPolygon) {
+    if (is_static(c.b)) {
       decide_static(c);
       return;
     }
@@ -535,10 +538,10 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       const double h = options_.chunk > 0.0 && closing > 0.0 ? options_.chunk * (ba.radius + bb.radius) / closing
                                                               : std::numeric_limits<double>::infinity();
       if (from < to && from >= c.t + h) {  // far enough: look again when they may touch
-        next.push_back({from, c.a, c.b, c.since, to, kNoPolygon});
+        next.push_back({from, c.a, c.b, c.since, to});
         return;
       }
-      jobs.push_back({c.a, c.b, from, from + h < to ? from + h : to, to, kNoPolygon});
+      jobs.push_back({c.a, c.b, from, from + h < to ? from + h : to, to});
       return;
     }
     if (refine && c.t - c.since > stale_age) {
@@ -573,11 +576,11 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       ++stats_.pair_checks;
       if (r.possible()) {
         ++stats_.passed;
-        next.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t, to, kNoPolygon});
+        next.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t, to});
       }
       return;
     }
-    jobs.push_back({c.a, c.b, c.t, to, to, kNoPolygon});
+    jobs.push_back({c.a, c.b, c.t, to, to});
   };
   // A body's narrow phase against a polygon over [from, until] (exact for a sphere,
   // conservative advancement for another shape).
@@ -591,16 +594,16 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   // short of the window's end brings the pair back at its end (into `next`). The same for
   // a static check's (body, polygon) pair and the body's window.
   const auto narrow_job = [&](const Job& j) {
-    if (j.polygon != kNoPolygon) {
-      const ContactResult c = narrow_static(j.a, j.polygon, j.from, j.until);
-      if (c.found()) static_contacts_.push_back({{j.a, j.polygon}, c, j.from, j.to});
-      else if (j.until < j.to) next.push_back({j.until, j.a, j.a, j.from, j.to, j.polygon});
+    if (is_static(j.b)) {
+      const ContactResult c = narrow_static(j.a, polygon_of(j.b), j.from, j.until);
+      if (c.found()) static_contacts_.push_back({{j.a, polygon_of(j.b)}, c, j.from, j.to});
+      else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to});
       return;
     }
     ++stats_.narrow_calls;
     const ContactResult c = narrow_pair(j.a, j.b, j.from, j.until);
     if (c.found()) contacts.push_back({{owner(j.a), owner(j.b)}, c, j.from, j.to});
-    else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to, kNoPolygon});  // a re-check (reads no `since`)
+    else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to});  // a re-check (reads no `since`)
   };
   // One round of inline checks: every pending check decided (bound time), then the round's
   // narrow calls (narrow time); what they give is the next round. Two clock reads a stage
@@ -650,7 +653,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     }
     // A queued check (refresh_bodies without recheck only): one event at a time, since its
     // refinement refreshes bodies.
-    if (e.polygon != kNoPolygon) {  // a static check: refresh a stale body, else the narrow phase
+    if (is_static(e.b)) {  // a static check: refresh a stale body, else the narrow phase
       if (version[e.a] != e.va) continue;
       const Window w = bound_->window(e.a);
       if (refine && e.t - w.t0 > stale_age) {
@@ -659,9 +662,9 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
         continue;
       }
       watch.start();
-      const ContactResult c = narrow_static(e.a, e.polygon, e.t, w.t1);
+      const ContactResult c = narrow_static(e.a, polygon_of(e.b), e.t, w.t1);
       watch.stop(local.narrow);
-      if (c.found()) static_contacts_.push_back({{e.a, e.polygon}, c, e.t, w.t1});
+      if (c.found()) static_contacts_.push_back({{e.a, polygon_of(e.b)}, c, e.t, w.t1});
       continue;
     }
     const std::uint32_t oa = owner(e.a), ob = owner(e.b);  // bodies (e.a, e.b: slots when wrapped)
