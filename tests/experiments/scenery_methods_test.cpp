@@ -149,8 +149,7 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
   CHECK(j["static_missed"] == 0);
 }
 
-TEST_CASE("@earliest runs on a scene with scenery; the kinematic principle stays a fixed-step option",
-          "[runner][scenery]") {
+TEST_CASE("@earliest runs on a scene with scenery and refuses the kinematic option", "[runner][scenery]") {
   ccdlab::Experiment e;
   e.scene_generator = {{"generator", "floor_ramp"}, {"bodies", 4}};
   e.methods = {"capsule/grid", "capsule/grid@earliest"};

@@ -162,8 +162,13 @@ TEST_CASE("the earliest scheduler misses no body-static event on the dyadic case
     REQUIRE(events.size() == 11);
     const double A = scene.max_acceleration();
     long found = 0;
+#ifdef CCDLAB_SANITIZED
+    const std::vector<const char*> broads{"grid"};  // every run meets every assertion: fewer runs
+#else
+    const std::vector<const char*> broads{"grid", "sap"};
+#endif
     for (const std::string& bound : continuous_bounds())
-      for (const char* broad : {"grid", "sap"})
+      for (const char* broad : broads)
         // 1/4 and 1/8 put window ends on the contact instants 3/16, 1/4, 7/16, 1/2, 7/8, 1;
         // 0.3 does not divide the horizon.
         for (const double dt : {0.25, 0.125, 0.3})
