@@ -55,14 +55,6 @@ ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
         throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
                               "@earliest takes plain spheres only in a scene that wraps around (box.boundary "
                               "\"wrap\"); use the fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
-  // The scheduler has no static stages (docs/scenery-methods.md): it would count every
-  // body-static event as missed while its record says conservative. Refused instead.
-  if (!scene.scenery.empty())
-    for (std::size_t i = 0; i < e.methods.size(); ++i)
-      if (parse_method(e.methods[i]).scheduled())
-        throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
-                              "@earliest does not check static scenery (the scene has \"scenery\"); use the "
-                              "fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
   return scene;
 }
 

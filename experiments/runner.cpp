@@ -33,6 +33,7 @@ struct Counts {
   std::vector<double> lag, penetration;  // per event; NaN = not detected
   // Scenery: the static stages' pairs, summed over steps, and per static event its lag.
   std::uint64_t static_candidates = 0, static_bound_candidates = 0, static_confirmed = 0, static_tests_saved = 0;
+  std::uint64_t static_pair_checks = 0, static_narrow_calls = 0;  // scheduled methods
   std::vector<double> static_lag;
   bool operator==(const Counts& o) const {
     auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
@@ -47,6 +48,7 @@ struct Counts {
            refreshes == o.refreshes && steps == o.steps && same(lag, o.lag) &&
            static_candidates == o.static_candidates && static_bound_candidates == o.static_bound_candidates &&
            static_confirmed == o.static_confirmed && static_tests_saved == o.static_tests_saved &&
+           static_pair_checks == o.static_pair_checks && static_narrow_calls == o.static_narrow_calls &&
            same(static_lag, o.static_lag);
   }
 };
@@ -139,6 +141,7 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   options.rigid = in.rigid;
   ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
                                    method.broad_phase.make(), options);
+  scheduler.set_scenery(in.scene->scenery);
   std::vector<ccd::ScheduledContact> contacts;
   ccd::StepTimes times;
   const auto t_start = Clock::now();
@@ -159,6 +162,14 @@ Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double d
   c.refreshes = st.refreshes;
   c.steps = st.batches;
   for (const ccd::ScheduledContact& sc : contacts) match_contact(in, true, sc.pair, sc.contact, sc.from, sc.to, c);
+  c.static_candidates = st.static_candidates;
+  c.static_bound_candidates = st.static_passed;
+  c.static_confirmed = scheduler.static_contacts().size();
+  c.static_pair_checks = st.static_checks;
+  c.static_narrow_calls = st.static_narrow_calls;
+  const StaticEventIndex static_index = index_static_events(in.static_events);
+  for (const ccd::ScheduledStaticContact& sc : scheduler.static_contacts())
+    match_static_contact(in, static_index, true, {sc.pair, sc.contact}, sc.from, sc.to, c);
   return c;
 }
 
@@ -357,6 +368,8 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   r.static_bound_candidates = c.static_bound_candidates;
   r.static_confirmed = c.static_confirmed;
   r.static_tests_saved = c.static_tests_saved;
+  r.static_pair_checks = c.static_pair_checks;
+  r.static_narrow_calls = c.static_narrow_calls;
   r.candidates = c.candidates;
   r.bound_candidates = c.bound_candidates;
   r.confirmed = c.confirmed;
@@ -446,6 +459,8 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
     j["pair_checks"] = r.pair_checks;
     j["narrow_calls"] = r.narrow_calls;
     j["refreshes"] = r.refreshes;
+    j["static_pair_checks"] = r.static_pair_checks;
+    j["static_narrow_calls"] = r.static_narrow_calls;
   }
   if (list_missed) {
     nlohmann::json missed = nlohmann::json::array();

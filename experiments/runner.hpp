@@ -109,8 +109,8 @@ struct RunRecord {
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
   /// Scenery (0 for a scene without it): body-static events of the truth, counted like the
   /// body-body ones (in progress at t = 0 apart; detected by the same rule), the static
-  /// stages' pairs summed over steps, and the static pairs the kinematic principle skipped.
-  /// Scheduled methods run no static stages.
+  /// stages' pairs summed over steps (scheduled methods: over the bodies' windows and the
+  /// static refinements), and the static pairs the kinematic principle skipped.
   std::uint64_t static_events = 0;
   std::uint64_t static_initial_contacts = 0;
   std::uint64_t static_detected = 0;
@@ -119,6 +119,10 @@ struct RunRecord {
   std::uint64_t static_bound_candidates = 0;
   std::uint64_t static_confirmed = 0;
   std::uint64_t static_tests_saved = 0;
+  /// Scheduled methods only (written when `scheduled`): the bound's static tests (and speed
+  /// re-checks) and the body-polygon narrow-phase calls.
+  std::uint64_t static_pair_checks = 0;
+  std::uint64_t static_narrow_calls = 0;
   bool counts_stable = true;           ///< identical counts over all repeats
   std::vector<MissedEvent> missed_events;  ///< with RunInput::list_missed: sorted by enter (then a, b)
   bool cancelled = false;

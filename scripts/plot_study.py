@@ -673,9 +673,20 @@ def cloth(results, outdir, formats):
 
 # ---------------------------------------------------------------------------- thin-obstacles
 
+def static_work(r):
+    """'static pair tests / static narrow calls / CPU s per simulated s' of one record (the
+    CPU time is the whole method's, body-body pairs included)."""
+    if "static_pair_checks" in r:  # @earliest
+        tests, calls = r["static_pair_checks"], r["static_narrow_calls"]
+    else:
+        tests, calls = r["static_candidates"], r["static_bound_candidates"]
+    return f"{tests} / {calls} / {r['cpu_seconds_per_simulated_second']:.3g}"
+
+
 def thin_obstacles(results, outdir, formats):
-    """Static misses (balls through thin scenery polygons) against dt, and the polygon tests
-    the kinematic principle saved (`@fixed:kinematic=1` methods)."""
+    """Static misses (balls through thin scenery polygons) against dt, the polygon tests
+    the kinematic principle saved (`@fixed:kinematic=1` methods), and the static work and
+    CPU time of the conservative fixed-step methods against the scheduled ones (`@earliest`)."""
     res = results[0]
     ds = dts(res)
     out = [f"### thin-obstacles: {plot.title(res)}", "",
@@ -684,7 +695,11 @@ def thin_obstacles(results, outdir, formats):
            "|---|---|" + "---|" * len(ds)]
     fig, ax = plt.subplots(figsize=(8, 4.5))
     saved_rows = []
+    work_rows = []
     for i, (name, rs) in enumerate(plot.by_method(res["records"]).items()):
+        if rs[0]["continuous"] and "kinematic=1" not in name:
+            cells = {r["dt"]: static_work(r) for r in rs}
+            work_rows.append(f"| {name} | " + " | ".join(cells.get(d, "") for d in ds) + " |")
         cont = rs[0]["continuous"]
         ax.plot([r["dt"] for r in rs], [r["static_missed"] for r in rs], label=name, linewidth=1.3, markersize=4,
                 linestyle="-" if cont else "--", **plot.style(i))
@@ -707,6 +722,10 @@ def thin_obstacles(results, outdir, formats):
     if saved_rows:
         out += ["", "kinematic principle: static tests saved / static pairs passed by the bound (columns: dt, s)", "",
                 "| method | " + " | ".join(fmt_dt(d) for d in ds) + " |", "|---|" + "---|" * len(ds)] + saved_rows
+    if work_rows:
+        out += ["", "static pair tests / static narrow calls / CPU s per simulated s (fixed steps: static_candidates / "
+                "static_bound_candidates; @earliest: static_pair_checks / static_narrow_calls; columns: dt, s)", "",
+                "| method | " + " | ".join(fmt_dt(d) for d in ds) + " |", "|---|" + "---|" * len(ds)] + work_rows
     out += ["", self_check_line(results)]
     return out, save(fig, outdir, "thin-obstacles-missed", formats)
 

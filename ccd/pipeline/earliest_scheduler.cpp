@@ -1,9 +1,12 @@
 #include <ccd/pipeline/earliest_scheduler.hpp>
 
+#include <bounds/rounding.hpp>
 #include <bounds/speed_earliest.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/state_cursor.hpp>
+#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/pipeline/scheduler_images.hpp>
+#include <ccd/queries/point_polygon.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -23,11 +26,19 @@ constexpr int kMaxWindowHalvings = 10;
 
 enum class Kind : std::uint8_t { Check = 0, Expiry = 1 };
 
+// A static check (body a against a polygon of the scenery) carries the polygon in b with
+// this bit set, so checks and jobs keep their size; bodies, slots and polygons stay below
+// it (run() and set_scenery() refuse more).
+constexpr std::uint32_t kStaticBit = 0x80000000u;
+constexpr bool is_static(std::uint32_t b) { return (b & kStaticBit) != 0; }
+constexpr std::uint32_t static_b(std::uint32_t polygon) { return polygon | kStaticBit; }
+constexpr std::uint32_t polygon_of(std::uint32_t b) { return b & ~kStaticBit; }
+
 struct Event {
   double t;
   Kind kind;
   std::uint32_t a, b;    // a pair (a < b; in a wrapped scene two slots, a's owner < b's), or the
-                         // expiring body in a (b == a)
+                         // expiring body in a (b == a), or a static check's body and static_b(polygon)
   std::uint64_t va, vb;  // the bodies' version stamps when the event was queued
   double since;          // a check: when the bounds it came from start
 };
@@ -93,6 +104,12 @@ EarliestScheduler::EarliestScheduler(std::unique_ptr<Bound> bound, std::unique_p
     throw std::invalid_argument("the earliest scheduler needs a finite chunk >= 0");
 }
 
+void EarliestScheduler::set_scenery(std::span<const StaticPolygon> polygons) {
+  if (polygons.size() >= kStaticBit) throw std::invalid_argument("the earliest scheduler takes fewer than 2^31 polygons");
+  scenery_ = polygons;
+  static_index_ = StaticIndex::from_polygons(polygons);
+}
+
 bool EarliestScheduler::run(const Trajectories& motion, double horizon, double acceleration_bound,
                             const std::optional<WallBox>& walls, std::vector<ScheduledContact>& contacts,
                             StepTimes* times, const std::atomic<bool>* cancel) {
@@ -100,8 +117,12 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
   const bool wrapped = motion.periodic() != nullptr;
   if (wrapped && options_.rigid)
     throw std::invalid_argument("the earliest scheduler takes plain spheres only in a scene that wraps around");
+  if (wrapped && !scenery_.empty())
+    throw std::invalid_argument("the earliest scheduler takes no scenery in a scene that wraps around");
+  if (motion.size() >= kStaticBit) throw std::invalid_argument("the earliest scheduler takes fewer than 2^31 bodies");
   stats_ = {};
   contacts.clear();
+  static_contacts_.clear();
   const std::size_t n = motion.size();
   const double dt = options_.window;
   const double T = horizon;
@@ -212,6 +233,36 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
       else queue.push({t, Kind::Check, p.a, p.b, version[p.a], version[p.b], w.t0});
     }
   };
+  // Scenery: the static index's polygons for the boxes of `bodies` (bounds just built, from
+  // `now`), each tested over the body's own window; a pair that may touch gets a check.
+  // Two passes (index, then tests), so that each stage reads the clock once per refresh.
+  std::vector<std::uint32_t> polygons;
+  std::vector<StaticPair> static_pairs;
+  const auto test_static_pairs = [&](double now, std::span<const std::uint32_t> bodies) {
+    if (scenery_.empty()) return;
+    watch.start();
+    static_pairs.clear();
+    for (const std::uint32_t i : bodies) {
+      polygons.clear();
+      static_index_.query(boxes[i], polygons);
+      for (const std::uint32_t p : polygons) static_pairs.push_back({i, p});
+    }
+    watch.stop(local.broad);
+    stats_.static_candidates += static_pairs.size();
+    watch.start();
+    for (const StaticPair& q : static_pairs) {
+      const std::uint32_t i = q.body, p = q.polygon;
+      ++stats_.static_checks;
+      const PairTest r = bound_->test_static(i, boxes[i], scenery_[p], static_index_.box(p));
+      if (!r.possible()) continue;
+      ++stats_.static_passed;
+      const Window w = bound_->window(i);
+      const double t = std::max(r.earliest, now);
+      if (inline_checks) pending.push_back({t, i, static_b(p), w.t0, w.t1});
+      else queue.push({t, Kind::Check, i, static_b(p), version[i], version[i], w.t0});
+    }
+    watch.stop(local.bound);
+  };
   const auto queue_expiry = [&](std::uint32_t i, double w1) {
     if (w1 < T) queue.push({w1, Kind::Expiry, i, i, version[i], version[i], w1});
   };
@@ -291,6 +342,7 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     watch.start();
     test_pairs(t);
     watch.stop(local.bound);
+    test_static_pairs(t, batch);
   };
 
   // Wrapped scenes: refreshes the bodies of `batch` at time t: their home slots, then their
@@ -389,6 +441,11 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     watch.start();
     test_pairs(0.0);
     watch.stop(local.bound);
+    if (!scenery_.empty()) {
+      batch.resize(n);
+      for (std::uint32_t i = 0; i < n; ++i) batch[i] = i;
+      test_static_pairs(0.0, batch);
+    }
     for (std::uint32_t i = 0; i < n; ++i) queue_expiry(i, ends[i]);
   }
 
@@ -405,11 +462,63 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     return rigid ? table_->find(rigid->kind(x), rigid->kind(y))(in, x, y) : narrow_(in, x, y);
   };
 
+  // A due static check at c.t (inline mode): body c.a against polygon_of(c.b) over the
+  // rest of the body's window, as a pair check below with one moving body.
+  const auto decide_static = [&](const Check& c) {
+    const double to = c.to;
+    const std::uint32_t i = c.a;
+    const std::uint32_t p = polygon_of(c.b);
+    const StaticPolygon& polygon = scenery_[p];
+    if (options_.recheck) {
+      // From the body's state now: its distance to the polygon (a static convex set) and
+      // its speed bound give the earliest possible contact (bounds/speed_earliest.hpp).
+      state_at(i, c.t);
+      const Vec3& x = states[i].position;
+      const SpeedBall ball{x, c.t, speed_bound(i, c.t, to), states[i].radius};
+      const double d = std::sqrt(point_polygon_closest(x, polygon).distance_squared);
+      const double from = std::max(c.t, speed_earliest_static(ball, d, static_rounding_slack(x, polygon)));
+      ++stats_.static_checks;
+      if (from > to) return;
+      ++stats_.static_passed;
+      // The chunk: the time in which the distance may change by `chunk` x the radius.
+      const double h = options_.chunk > 0.0 && ball.speed > 0.0 ? options_.chunk * ball.radius / ball.speed
+                                                                  : std::numeric_limits<double>::infinity();
+      if (from < to && from >= c.t + h) {
+        next.push_back({from, i, c.b, c.since, to});
+        return;
+      }
+      jobs.push_back({i, c.b, from, from + h < to ? from + h : to, to});
+      return;
+    }
+    if (refine && c.t - c.since > stale_age) {
+      // The body's own bound from now to the end of its window, in the scratch instance.
+      state_at(i, c.t);
+      pair_bodies[0] = i;
+      ctx.t0 = c.t;
+      ctx.t1 = to;
+      ctx.start = states;
+      if (scratch_boxes.size() != n) scratch_boxes.resize(n);
+      scratch_->refresh(ctx, std::span<const std::uint32_t>(pair_bodies, 1), scratch_boxes);
+      const PairTest r = scratch_->test_static(i, scratch_boxes[i], polygon, static_index_.box(p));
+      ++stats_.refreshes;
+      ++stats_.static_checks;
+      if (r.possible()) {
+        ++stats_.static_passed;
+        next.push_back({std::max(r.earliest, c.t), i, c.b, c.t, to});
+      }
+      return;
+    }
+    jobs.push_back({i, c.b, c.t, to, to});
+  };
   // A due check at c.t (inline mode; c.a, c.b slots when wrapped): the speed re-check or the
   // refinement, which give a later check (into `next`), a narrow call (into `jobs`) or
   // nothing. Reads only the two bodies' bounds and motion, which no refresh changes before
   // the check is due (both windows end at or after c.t).
   const auto decide = [&](const Check& c) {
+    if (is_static(c.b)) {
+      decide_static(c);
+      return;
+    }
     const double to = c.to;
     if (options_.recheck) {
       // A speed re-check from both bodies' states now (no bound built), then the narrow
@@ -473,10 +582,24 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     }
     jobs.push_back({c.a, c.b, c.t, to, to});
   };
+  // A body's narrow phase against a polygon over [from, until] (exact for a sphere,
+  // conservative advancement for another shape).
+  const auto narrow_static = [&](std::uint32_t i, std::uint32_t polygon, double from, double until) {
+    ++stats_.static_narrow_calls;
+    const NarrowInput in{&motion, states, {}, from, until, false, options_.rigid};
+    return body_polygon_narrow(in, i, scenery_[polygon]);
+  };
   // A narrow call over [from, until]; a found contact is reported over [from, to] and ends
   // the pair's window (as one call over [from, to] would have found it first), else a chunk
-  // short of the window's end brings the pair back at its end (into `next`).
+  // short of the window's end brings the pair back at its end (into `next`). The same for
+  // a static check's (body, polygon) pair and the body's window.
   const auto narrow_job = [&](const Job& j) {
+    if (is_static(j.b)) {
+      const ContactResult c = narrow_static(j.a, polygon_of(j.b), j.from, j.until);
+      if (c.found()) static_contacts_.push_back({{j.a, polygon_of(j.b)}, c, j.from, j.to});
+      else if (j.until < j.to) next.push_back({j.until, j.a, j.b, j.from, j.to});
+      return;
+    }
     ++stats_.narrow_calls;
     const ContactResult c = narrow_pair(j.a, j.b, j.from, j.until);
     if (c.found()) contacts.push_back({{owner(j.a), owner(j.b)}, c, j.from, j.to});
@@ -530,6 +653,20 @@ bool EarliestScheduler::run(const Trajectories& motion, double horizon, double a
     }
     // A queued check (refresh_bodies without recheck only): one event at a time, since its
     // refinement refreshes bodies.
+    if (is_static(e.b)) {  // a static check: refresh a stale body, else the narrow phase
+      if (version[e.a] != e.va) continue;
+      const Window w = bound_->window(e.a);
+      if (refine && e.t - w.t0 > stale_age) {
+        batch.assign(1, e.a);
+        refresh(e.t);
+        continue;
+      }
+      watch.start();
+      const ContactResult c = narrow_static(e.a, polygon_of(e.b), e.t, w.t1);
+      watch.stop(local.narrow);
+      if (c.found()) static_contacts_.push_back({{e.a, polygon_of(e.b)}, c, e.t, w.t1});
+      continue;
+    }
     const std::uint32_t oa = owner(e.a), ob = owner(e.b);  // bodies (e.a, e.b: slots when wrapped)
     if (oa == SchedulerImages::kFree || ob == SchedulerImages::kFree || version[oa] != e.va || version[ob] != e.vb)
       continue;  // queued from an older bound

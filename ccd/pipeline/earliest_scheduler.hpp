@@ -63,8 +63,23 @@
 // the two slots' paths (the shift built in), and a contact is reported for the bodies. A
 // slot changes hands only when its body refreshes, which makes its queued checks stale, so
 // coverage is as above for every image pair. `refreshes` counts image bounds too.
+// Static scenery (set_scenery; docs/scenery-methods.md): the polygons are indexed once in a
+// StaticIndex (ccd/broad_phase/static_index.hpp). Whenever a body's bound is built over a
+// window (the first one and every refresh), the index is queried with the body's box and
+// each (body, polygon) pair it reports is tested with Bound::test_static over that body's
+// own window; a pair that may touch gets a static check at its `earliest`, handled as a
+// pair check with one body: the same `stale` refinement (the body's own bound rebuilt from
+// the check time to its window's end in the scratch instance, then test_static again),
+// speed re-check with `recheck` (the body's speed bound and its distance to the polygon,
+// a chunk being the time in which that distance may change by chunk x r), or narrow phase
+// (ccd/narrow/body_polygon_narrow.hpp: exact for spheres, conservative advancement for
+// other shapes) from the check time to the window's end. With `refresh_bodies` (queued
+// checks) a stale static check refreshes its body. Coverage: each body's time is tiled by
+// its windows, each window's polygons are examined when its bound is built, as above.
+// A scene that wraps around takes no scenery (std::invalid_argument).
 #include <bounds/bound.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/broad_phase/static_index.hpp>
 #include <ccd/narrow/narrow_table.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
@@ -72,6 +87,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace ccd {
@@ -115,6 +131,14 @@ struct ScheduledContact {
   double to = 0.0;
 };
 
+/// A body's contact with a static polygon, found by a narrow call over [from, to].
+struct ScheduledStaticContact {
+  StaticPair pair;
+  ContactResult contact;  ///< Hit or Overlapping: first contact in [from, to]
+  double from = 0.0;
+  double to = 0.0;
+};
+
 struct ScheduleStats {
   std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls, refinements whose
                                    ///< refined boxes are disjoint, and speed re-checks)
@@ -125,6 +149,11 @@ struct ScheduleStats {
                                    ///< pair refinements' included)
   std::uint64_t candidates = 0;    ///< pairs the broad phase reported, summed over updates
   std::uint64_t batches = 0;       ///< distinct refresh events (times at which bounds were rebuilt)
+  // Scenery (0 without it); `refreshes` counts the static refinements' bounds (1 each).
+  std::uint64_t static_candidates = 0;    ///< (body, polygon) pairs the static index reported
+  std::uint64_t static_checks = 0;        ///< static tests (Bound::test_static calls, speed re-checks)
+  std::uint64_t static_passed = 0;        ///< of those, Possible
+  std::uint64_t static_narrow_calls = 0;  ///< body-polygon narrow-phase calls
 };
 
 class EarliestScheduler {
@@ -139,10 +168,17 @@ class EarliestScheduler {
   /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
   /// order the narrow calls ran (a pair's contacts in time order). Adds stage times to `*times` when given. Stops early (returns
   /// false) when `*cancel` becomes true. A scene that wraps around (motion.periodic()) takes
-  /// plain spheres only (std::invalid_argument with `options.rigid`).
+  /// plain spheres only (std::invalid_argument with `options.rigid`) and no scenery.
+  /// Static contacts go to static_contacts().
   bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
            std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr,
            const std::atomic<bool>* cancel = nullptr);
+
+  /// The scenery the bodies are checked against (indexed here; the polygons must outlive
+  /// the scheduler). Empty: no static checks.
+  void set_scenery(std::span<const StaticPolygon> polygons);
+  /// The static contacts of the last run, in the order the narrow calls ran.
+  const std::vector<ScheduledStaticContact>& static_contacts() const { return static_contacts_; }
 
   const ScheduleStats& stats() const { return stats_; }
   const Bound& bound() const { return *bound_; }
@@ -156,6 +192,9 @@ class EarliestScheduler {
   NarrowEntry narrow_;
   const NarrowTable* table_;
   ScheduleStats stats_;
+  std::span<const StaticPolygon> scenery_;
+  StaticIndex static_index_;
+  std::vector<ScheduledStaticContact> static_contacts_;
 };
 
 }  // namespace ccd

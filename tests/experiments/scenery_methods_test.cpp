@@ -1,5 +1,7 @@
 // Every bound (with the grid broad phase, and the continuous ones also with the kinematic
-// principle) against scenery, through the runner and the exact static truth: conservative
+// principle and under the earliest-contact scheduler, with and without speed-adapted
+// windows and speed re-checks) against scenery, through the runner and the exact static
+// truth: conservative
 // methods miss no body-static event, and no method confirms a static contact the truth
 // does not have. Scenes: dyadic adversarial cases (grazing a vertex and an edge, tangent
 // to a face at the horizon, sliding parallel to a face at distance exactly r, contact
@@ -74,13 +76,22 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
   Checked out;
   for (const ccd::BoundInfo& b : ccd::bound_registry()) {
     std::vector<std::string> names{std::string(b.name) + "/grid"};
-    if (b.knowledge != ccd::Knowledge::Instant) names.push_back(std::string(b.name) + "/grid@fixed:kinematic=1");
+    if (b.knowledge != ccd::Knowledge::Instant) {
+      names.push_back(std::string(b.name) + "/grid@fixed:kinematic=1");
+      names.push_back(std::string(b.name) + "/grid@earliest");
+      names.push_back(std::string(b.name) + "/grid@earliest:reach=2,recheck=1");
+    }
     for (const std::string& name : names) {
       INFO(what << " " << name << " dt " << dt);
       const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), dt);
       CHECK(r.static_events == events.size());
       CHECK(r.static_initial_contacts + r.static_detected + r.static_missed == r.static_events);
       CHECK(r.self_check_unexpected == 0);
+      if (r.scheduled) {
+        CHECK(r.static_bound_candidates <= r.static_pair_checks);
+        CHECK(r.static_confirmed <= r.static_narrow_calls);
+        CHECK(ccdlab::to_json(r)["static_narrow_calls"] == r.static_narrow_calls);
+      }
       const bool kinematic = name.find("kinematic=1") != std::string::npos;
       if (r.continuous && r.conservative && (!kinematic || kinematic_exact)) CHECK(r.static_missed == 0);
       if (!kinematic) CHECK(r.static_tests_saved == 0);
@@ -138,18 +149,15 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
   CHECK(j["static_missed"] == 0);
 }
 
-TEST_CASE("@earliest refuses a scene with scenery, naming the method", "[runner][scenery]") {
+TEST_CASE("@earliest runs on a scene with scenery and refuses the kinematic option", "[runner][scenery]") {
   ccdlab::Experiment e;
   e.scene_generator = {{"generator", "floor_ramp"}, {"bodies", 4}};
   e.methods = {"capsule/grid", "capsule/grid@earliest"};
-  try {
-    ccdlab::load_experiment_scene(e, "e.json");
-    FAIL("an @earliest method on a scene with scenery was accepted");
-  } catch (const ccd::InputError& err) {
-    CHECK(err.file() == "e.json");
-    CHECK(err.field() == "methods[1]");
-    CHECK(std::string(err.what()).find("capsule/grid") != std::string::npos);
-  }
-  e.methods = {"capsule/grid"};
   CHECK_FALSE(ccdlab::load_experiment_scene(e, "e.json").scenery.empty());
+  try {
+    ccdlab::parse_method("capsule/grid@earliest:kinematic=1");
+    FAIL("@earliest:kinematic=1 was accepted");
+  } catch (const std::invalid_argument& err) {
+    CHECK(std::string(err.what()).find("kinematic") != std::string::npos);
+  }
 }
