@@ -1,5 +1,6 @@
 #include <bounds/capsule_bound.hpp>
 #include <bounds/rounding.hpp>
+#include <ccd/motion/piece_walk.hpp>
 #include <ccd/queries/point_polygon.hpp>
 #include <ccd/queries/segment_polygon.hpp>
 #include <ccd/queries/segment_segment.hpp>
@@ -23,11 +24,14 @@ double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
 
 Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
   const Trajectories& tr = *ctx.exact;
-  const Vec3 p0 = tr.position(i, ctx.t0);
-  const Vec3 p1 = tr.position(i, ctx.t1);
-  double e = 0.0;
+  // Every piece is found from the one at t0 (the state cursor's when the pipeline has it):
+  // no search (ccd/motion/piece_walk.hpp).
+  const std::size_t k = ctx.piece_at_t0(i);
   const auto pieces = tr.pieces(i);
-  const Piece* q = &tr.piece_at(i, ctx.t0);
+  const Vec3 p0 = pieces[k].position(ctx.t0);
+  const Vec3 p1 = pieces[piece_index_from(tr, i, k, ctx.t1)].position(ctx.t1);
+  double e = 0.0;
+  const Piece* q = pieces.data() + k;
   for (; q != pieces.data() + pieces.size() && q->t0 <= ctx.t1; ++q) {
     const double u0 = std::max(ctx.t0, q->t0);
     const double u1 = std::min(ctx.t1, q->t1);
@@ -40,11 +44,11 @@ Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
                                        point_segment_distance(q->position(u1), p0, p1));
     e = std::max(e, ends + dev);
   }
-  Aabb swept = tr.swept_bounds(i, ctx.t0, ctx.t1);
+  Aabb swept = swept_bounds_from(tr, i, k, ctx.t0, ctx.t1);
   const double magnitude = swept.lo.cwiseAbs().cwiseMax(swept.hi.cwiseAbs()).maxCoeff() + e;
   const double slack = rounding_slack(magnitude);
   const double radius = tr.radius(i) + e + slack;
-  capsules_[i] = {p0, p1, radius, max_speed(tr, i, ctx.t0, ctx.t1), tr.radius(i)};
+  capsules_[i] = {p0, p1, radius, max_speed_from(tr, i, k, ctx.t0, ctx.t1), tr.radius(i)};
   swept.lo.array() -= slack;
   swept.hi.array() += slack;
   const Aabb cap{p0.cwiseMin(p1).array() - radius, p0.cwiseMax(p1).array() + radius};

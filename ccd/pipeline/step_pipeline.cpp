@@ -53,7 +53,14 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   Stopwatch watch(times != nullptr);
 
   watch.start();
-  bound_->prepare(ctx, boxes_);
+  if (!start_piece.empty() && ctx.start_piece.empty() && ctx.exact == &motion) {
+    // The bounds built from the pieces walk from the cursor's pieces instead of searching.
+    StepContext with_pieces = ctx;
+    with_pieces.start_piece = start_piece;
+    bound_->prepare(with_pieces, boxes_);
+  } else {
+    bound_->prepare(ctx, boxes_);
+  }
   watch.stop(local.bound);
 
   watch.start();

@@ -108,7 +108,9 @@ class StepPipeline {
 
   /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
   /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
-  /// body's piece index at t0 (StateCursor::pieces), sparing the sample test a search.
+  /// body's piece index at t0 in `motion` (StateCursor::pieces), sparing the sample test
+  /// and the narrow phase a search, and the bound too when ctx.exact is `motion`
+  /// (StepContext::start_piece).
   /// `rigid`: the shapes and spin of a scene with non-sphere bodies (null: spheres only).
   void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
            std::span<const std::size_t> start_piece = {}, const RigidMotion* rigid = nullptr);
