@@ -103,6 +103,12 @@ class Bound {
   /// bound's assumption holds (every conservative bound guarantees this; bounds without
   /// timing return the common window's start).
   virtual PairTest test(std::uint32_t a, std::uint32_t b) const = 0;
+  /// `test` for every pair of `pairs`, in order: each Possible pair is appended to `passed`
+  /// and its `earliest` to `earliest` (the step pipeline's stage 3). The default calls
+  /// `test` pair by pair; a bound may override it to fetch the data of the pairs ahead
+  /// (the pairs of a broad phase name scattered bodies), with the same answers.
+  virtual void test_pairs(std::span<const BodyPair> pairs, std::vector<BodyPair>& passed,
+                          std::vector<double>& earliest) const;
   /// For a scheduler (ccd/pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
   /// only, over the window [ctx.t0, ctx.t1], from ctx.start (indexed by body; only the
   /// listed entries are read) and writes their boxes into boxes[body]; every other body

@@ -27,8 +27,10 @@ std::ptrdiff_t single_piece(const Trajectories& m, std::span<const std::size_t> 
 
 // Asks the cache for body's piece at u0 and its trailing parts (two lines each), when the
 // cursor's piece index is given: the pairs of a block read the pieces of scattered bodies,
-// and asking for all of them before the gather lets their misses overlap.
-void prefetch_piece(const Trajectories& m, std::span<const std::size_t> start_piece, std::uint32_t body) {
+// and asking for those of the pair a few places ahead while gathering this one lets their
+// misses overlap. Always inlined: GCC would find a separate function free of side effects
+// and drop its calls.
+[[gnu::always_inline]] inline void prefetch_piece(const Trajectories& m, std::span<const std::size_t> start_piece, std::uint32_t body) {
   const std::size_t k = start_piece[body];
   const char* q = reinterpret_cast<const char*>(m.pieces(body).data() + k);
   const char* l = reinterpret_cast<const char*>(m.lows(body).data() + k);
@@ -54,13 +56,12 @@ void sphere_sphere_narrow_batch(const NarrowInput& in, std::span<const BodyPair>
   for (std::size_t first = 0; first < pairs.size(); first += RelativeMotionBlock::capacity) {
     const std::size_t count = std::min(RelativeMotionBlock::capacity, pairs.size() - first);
     block.count = count;
-    if (!in.start_piece.empty())
-      for (std::size_t i = 0; i < count; ++i) {
-        prefetch_piece(m, in.start_piece, pairs[first + i].a);
-        prefetch_piece(m, in.start_piece, pairs[first + i].b);
-      }
     for (std::size_t i = 0; i < count; ++i) {
       const BodyPair p = pairs[first + i];
+      if (constexpr std::size_t kAhead = 8; !in.start_piece.empty() && first + i + kAhead < pairs.size()) {
+        prefetch_piece(m, in.start_piece, pairs[first + i + kAhead].a);
+        prefetch_piece(m, in.start_piece, pairs[first + i + kAhead].b);
+      }
       const std::ptrdiff_t ka = single_piece(m, in.start_piece, p.a, u0, u1);
       const std::ptrdiff_t kb = ka < 0 ? -1 : single_piece(m, in.start_piece, p.b, u0, u1);
       bool ok = kb >= 0;

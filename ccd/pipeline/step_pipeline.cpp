@@ -71,13 +71,7 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   watch.start();
   out.passed.clear();
   out.earliest.clear();
-  for (const BodyPair& p : out.candidates) {
-    const PairTest t = bound_->test(p.a, p.b);
-    if (t.possible()) {
-      out.passed.push_back(p);
-      out.earliest.push_back(t.earliest);
-    }
-  }
+  bound_->test_pairs(out.candidates, out.passed, out.earliest);
   watch.stop(local.bound);
 
   watch.start();

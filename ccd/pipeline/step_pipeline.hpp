@@ -12,7 +12,8 @@
 // Stages and their outputs (StepResult):
 //  1. bound.prepare(ctx) -> one box per body (boxes());
 //  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
-//  3. bound.test(a, b) for every candidate -> `passed` (status Possible), in candidate order;
+//  3. bound.test(a, b) for every candidate (through bound.test_pairs) -> `passed` (status
+//     Possible), in candidate order;
 //  4. narrow table entry for the pair's kinds (sphere x sphere: ccd/narrow/, exact; any
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
