@@ -71,16 +71,16 @@ struct StepContext {
   double t1 = 0.0;                       ///< step end (== t0 for Instant bounds)
   std::span<const BodyState> start;      ///< every body's state at t0 (always given)
   const Trajectories* exact = nullptr;   ///< the true motion: given only to Exact bounds
-  /// Optional, with `exact`: each body's piece index at t0 in `exact` (StateCursor::pieces:
-  /// the later piece at a break, as Trajectories::piece_index), so that the bounds built
-  /// from the pieces walk from it instead of searching. Empty: they search.
-  std::span<const std::size_t> start_piece;
   double acceleration_bound = 0.0;       ///< A for Bounded bounds
   std::optional<WallBox> walls;          ///< the scene's static walls (known to every bound)
   /// Shapes and prescribed spin of a scene with non-sphere bodies (ccd/motion/rigid_motion.hpp);
   /// null for sphere scenes. The orientation-aware bounds (frame_aabb, obb, obb_sat) read it;
   /// every other bound sees each body as its enclosing sphere (BodyState::radius).
   const RigidMotion* rigid = nullptr;
+  /// Optional, with `exact`: each body's piece index at t0 in `exact` (StateCursor::pieces:
+  /// the later piece at a break, as Trajectories::piece_index), so that the bounds built
+  /// from the pieces walk from it instead of searching. Empty: they search.
+  std::span<const std::size_t> start_piece{};
 
   /// The index of `body`'s piece at t0 in `exact`: start_piece[body] when given, else
   /// Trajectories::piece_index (the same index).
