@@ -15,7 +15,7 @@
 using ccd::Vec3;
 
 // Scenes per case: sanitizer builds (about 10x slower) run a third.
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef CCDLAB_SANITIZED
 constexpr int kReps = 2;
 #else
 constexpr int kReps = 6;

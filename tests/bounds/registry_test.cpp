@@ -14,9 +14,10 @@
 using ccd::Vec3;
 
 // Random-case counts: Release runs >= 1e6 constructed pairs; sanitizer builds (about 10x
-// slower) run a tenth. Override with -DCCDLAB_BOUNDS_PAIRS=N.
+// slower) run a tenth (CCDLAB_SANITIZED, defined for GCC and clang sanitizer builds by
+// tests/CMakeLists.txt). Override with -DCCDLAB_BOUNDS_PAIRS=N.
 #ifndef CCDLAB_BOUNDS_PAIRS
-#if defined(__SANITIZE_ADDRESS__)
+#ifdef CCDLAB_SANITIZED
 #define CCDLAB_BOUNDS_PAIRS 100000
 #else
 #define CCDLAB_BOUNDS_PAIRS 1000000
