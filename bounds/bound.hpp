@@ -77,6 +77,16 @@ struct StepContext {
   /// null for sphere scenes. The orientation-aware bounds (frame_aabb, obb, obb_sat) read it;
   /// every other bound sees each body as its enclosing sphere (BodyState::radius).
   const RigidMotion* rigid = nullptr;
+  /// Optional, with `exact`: each body's piece index at t0 in `exact` (StateCursor::pieces:
+  /// the later piece at a break, as Trajectories::piece_index), so that the bounds built
+  /// from the pieces walk from it instead of searching. Empty: they search.
+  std::span<const std::size_t> start_piece{};
+
+  /// The index of `body`'s piece at t0 in `exact`: start_piece[body] when given, else
+  /// Trajectories::piece_index (the same index).
+  std::size_t piece_at_t0(std::size_t body) const {
+    return start_piece.empty() ? exact->piece_index(body, t0) : start_piece[body];
+  }
 };
 
 class Bound {
@@ -93,6 +103,12 @@ class Bound {
   /// bound's assumption holds (every conservative bound guarantees this; bounds without
   /// timing return the common window's start).
   virtual PairTest test(std::uint32_t a, std::uint32_t b) const = 0;
+  /// `test` for every pair of `pairs`, in order: each Possible pair is appended to `passed`
+  /// and its `earliest` to `earliest` (the step pipeline's stage 3). The default calls
+  /// `test` pair by pair; a bound may override it to fetch the data of the pairs ahead
+  /// (the pairs of a broad phase name scattered bodies), with the same answers.
+  virtual void test_pairs(std::span<const BodyPair> pairs, std::vector<BodyPair>& passed,
+                          std::vector<double>& earliest) const;
   /// For a scheduler (ccd/pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
   /// only, over the window [ctx.t0, ctx.t1], from ctx.start (indexed by body; only the
   /// listed entries are read) and writes their boxes into boxes[body]; every other body

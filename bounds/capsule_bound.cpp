@@ -1,5 +1,6 @@
 #include <bounds/capsule_bound.hpp>
 #include <bounds/rounding.hpp>
+#include <ccd/motion/piece_walk.hpp>
 #include <ccd/queries/point_polygon.hpp>
 #include <ccd/queries/segment_polygon.hpp>
 #include <ccd/queries/segment_segment.hpp>
@@ -23,11 +24,14 @@ double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
 
 Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
   const Trajectories& tr = *ctx.exact;
-  const Vec3 p0 = tr.position(i, ctx.t0);
-  const Vec3 p1 = tr.position(i, ctx.t1);
-  double e = 0.0;
+  // Every piece is found from the one at t0 (the state cursor's when the pipeline has it):
+  // no search (ccd/motion/piece_walk.hpp).
+  const std::size_t k = ctx.piece_at_t0(i);
   const auto pieces = tr.pieces(i);
-  const Piece* q = &tr.piece_at(i, ctx.t0);
+  const Vec3 p0 = pieces[k].position(ctx.t0);
+  const Vec3 p1 = pieces[piece_index_from(tr, i, k, ctx.t1)].position(ctx.t1);
+  double e = 0.0;
+  const Piece* q = pieces.data() + k;
   for (; q != pieces.data() + pieces.size() && q->t0 <= ctx.t1; ++q) {
     const double u0 = std::max(ctx.t0, q->t0);
     const double u1 = std::min(ctx.t1, q->t1);
@@ -40,11 +44,11 @@ Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
                                        point_segment_distance(q->position(u1), p0, p1));
     e = std::max(e, ends + dev);
   }
-  Aabb swept = tr.swept_bounds(i, ctx.t0, ctx.t1);
+  Aabb swept = swept_bounds_from(tr, i, k, ctx.t0, ctx.t1);
   const double magnitude = swept.lo.cwiseAbs().cwiseMax(swept.hi.cwiseAbs()).maxCoeff() + e;
   const double slack = rounding_slack(magnitude);
   const double radius = tr.radius(i) + e + slack;
-  capsules_[i] = {p0, p1, radius, max_speed(tr, i, ctx.t0, ctx.t1), tr.radius(i)};
+  capsules_[i] = {p0, p1, radius, max_speed_from(tr, i, k, ctx.t0, ctx.t1), tr.radius(i)};
   swept.lo.array() -= slack;
   swept.hi.array() += slack;
   const Aabb cap{p0.cwiseMin(p1).array() - radius, p0.cwiseMax(p1).array() + radius};
@@ -86,6 +90,31 @@ PairTest CapsuleBound::test(std::uint32_t a, std::uint32_t b) const {
   const double t = speed_earliest({x.p0, windows_[a].t0, x.speed, x.body_radius},
                                   {y.p0, windows_[b].t0, y.speed, y.body_radius});
   return PairTest::possible_from(std::min(t, w.t1));
+}
+
+void CapsuleBound::test_pairs(std::span<const BodyPair> pairs, std::vector<BodyPair>& passed,
+                              std::vector<double>& earliest) const {
+  // A broad phase's pairs name scattered bodies, so each test would wait for two capsules
+  // and two windows from memory; asking for those of the pair kAhead places on while this
+  // one is tested overlaps the waits (kernels_bench, pipeline/continuous/capsule).
+  constexpr std::size_t kAhead = 8;
+  const auto fetch = [this](std::uint32_t body) {
+    const char* c = reinterpret_cast<const char*>(capsules_.data() + body);
+    __builtin_prefetch(c);
+    __builtin_prefetch(c + sizeof(Capsule) - 1);
+    __builtin_prefetch(windows_.data() + body);
+  };
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    if (i + kAhead < pairs.size()) {
+      fetch(pairs[i + kAhead].a);
+      fetch(pairs[i + kAhead].b);
+    }
+    const PairTest t = test(pairs[i].a, pairs[i].b);
+    if (t.possible()) {
+      passed.push_back(pairs[i]);
+      earliest.push_back(t.earliest);
+    }
+  }
 }
 
 PairTest CapsuleBound::test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,

@@ -37,6 +37,9 @@ class CapsuleBound final : public Bound {
   };
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
+  /// `test` pair by pair, fetching the capsules of the pairs a few places ahead.
+  void test_pairs(std::span<const BodyPair> pairs, std::vector<BodyPair>& passed,
+                  std::vector<double>& earliest) const override;
   PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
                        const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;

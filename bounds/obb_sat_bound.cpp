@@ -1,6 +1,7 @@
 #include <bounds/obb_sat_bound.hpp>
 #include <bounds/rounding.hpp>
 #include <bounds/shape_boxes.hpp>
+#include <ccd/motion/piece_walk.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -11,10 +12,10 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-/// Exact box of the centre's path of `body` over [u0, u1] (the pieces' tight boxes).
-Aabb centre_path_box(const Trajectories& tr, std::size_t body, double u0, double u1) {
+/// Exact box of the centre's path of `body` over [u0, u1] (the pieces' tight boxes), given
+/// k = Trajectories::piece_index(body, u0).
+Aabb centre_path_box(const Trajectories& tr, std::size_t body, std::size_t k, double u0, double u1) {
   const auto ps = tr.pieces(body);
-  std::size_t k = tr.piece_index(body, u0);
   // The piece before may end exactly at u0 (a break): include it, as swept_bounds does.
   if (k > 0 && ps[k - 1].t1 >= u0) --k;
   Aabb box = ps[k].centre_bounds(std::max(u0, ps[k].t0), std::min(u1, ps[k].t1));
@@ -45,10 +46,14 @@ Aabb ObbSatBound::build(const StepContext& ctx, std::size_t i) {
   double* t = times_.data() + i * (m_ + 1);
   for (int j = 0; j <= m_; ++j) t[j] = j == m_ ? ctx.t1 : ctx.t0 + (ctx.t1 - ctx.t0) * j / m_;
   Aabb all;
+  // The piece at each sub-interval's start, walked from the one at t0 (the state cursor's
+  // when given): no search (ccd/motion/piece_walk.hpp).
+  std::size_t k = ctx.piece_at_t0(i);
   for (int j = 0; j < m_; ++j) {
     const double s0 = t[j], s1 = t[j + 1];
     const double mid = 0.5 * (s0 + s1);
-    const Aabb path = centre_path_box(tr, i, s0, s1);
+    k = piece_index_from(tr, i, k, s0);
+    const Aabb path = centre_path_box(tr, i, k, s0, s1);
     const Vec3 dc = 0.5 * (path.lo + path.hi);
     const Vec3 dh = 0.5 * (path.hi - path.lo);
     OrientedBox& o = obbs_[i * m_ + j];

@@ -31,19 +31,25 @@ struct SpeedBall {
   double radius = 0.0;
 };
 
-/// The largest speed of `body` over [t0, t1] from its exact pieces: |v| is convex along a
-/// piece (v is linear), so each piece's largest speed is at one of its ends in the window;
+/// The largest speed of `body` over [t0, t1] from its exact pieces, walking from piece
+/// k = Trajectories::piece_index(body, t0) (a state cursor's): |v| is convex along a piece
+/// (v is linear), so each piece's largest speed is at one of its ends in the window;
 /// widened by 8 ulps.
-inline double max_speed(const Trajectories& motion, std::size_t body, double t0, double t1) {
+inline double max_speed_from(const Trajectories& motion, std::size_t body, std::size_t k, double t0, double t1) {
   double s = 0.0;
   const auto pieces = motion.pieces(body);
-  for (const Piece* q = &motion.piece_at(body, t0); q != pieces.data() + pieces.size() && q->t0 <= t1; ++q) {
+  for (const Piece* q = pieces.data() + k; q != pieces.data() + pieces.size() && q->t0 <= t1; ++q) {
     const double u0 = std::max(t0, q->t0);
     const double u1 = std::min(t1, q->t1);
     if (u1 < u0) continue;
     s = std::max({s, q->velocity(u0).norm(), q->velocity(u1).norm()});
   }
   return s * (1.0 + 8.0 * std::numeric_limits<double>::epsilon());
+}
+
+/// max_speed_from with the piece at t0 searched.
+inline double max_speed(const Trajectories& motion, std::size_t body, double t0, double t1) {
+  return max_speed_from(motion, body, motion.piece_index(body, t0), t0, t1);
 }
 
 inline double speed_earliest(const SpeedBall& a, const SpeedBall& b) {

@@ -1,5 +1,6 @@
 #include <bounds/rounding.hpp>
 #include <bounds/swept_aabb_bound.hpp>
+#include <ccd/motion/piece_walk.hpp>
 #include <ccd/queries/aabb_polygon.hpp>
 #include <ccd/queries/point_polygon.hpp>
 
@@ -12,8 +13,9 @@ namespace ccd {
 
 Aabb SweptAabbBound::build(const StepContext& ctx, std::size_t i) {
   const Trajectories& tr = *ctx.exact;
-  balls_[i] = {tr.position(i, ctx.t0), ctx.t0, max_speed(tr, i, ctx.t0, ctx.t1), tr.radius(i)};
-  Aabb box = ctx.exact->swept_bounds(i, ctx.t0, ctx.t1);
+  const std::size_t k = ctx.piece_at_t0(i);  // the state cursor's when given: no search
+  balls_[i] = {tr.pieces(i)[k].position(ctx.t0), ctx.t0, max_speed_from(tr, i, k, ctx.t0, ctx.t1), tr.radius(i)};
+  Aabb box = swept_bounds_from(tr, i, k, ctx.t0, ctx.t1);
   const double slack = rounding_slack(box.lo.cwiseAbs().cwiseMax(box.hi.cwiseAbs()).maxCoeff());
   box.lo.array() -= slack;
   box.hi.array() += slack;

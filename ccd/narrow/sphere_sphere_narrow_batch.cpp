@@ -11,7 +11,9 @@ namespace ccd {
 namespace {
 
 // The index of the one piece of `body` that covers [u0, u1] as the exact query sees it
-// (the first piece ending at or after u0 is also the one containing u0), or -1.
+// (the first piece ending at or after u0 is also the one containing u0), or -1. A piece
+// that ends exactly at u1 covers the window only when it is the body's last (a step ending
+// at the horizon): otherwise the exact query also meets the next piece at u1.
 std::ptrdiff_t single_piece(const Trajectories& m, std::span<const std::size_t> start_piece, std::uint32_t body,
                             double u0, double u1) {
   const std::span<const Piece> ps = m.pieces(body);
@@ -19,7 +21,23 @@ std::ptrdiff_t single_piece(const Trajectories& m, std::span<const std::size_t> 
   if (k >= ps.size()) return -1;
   const Piece& q = ps[k];
   const bool starts_before = q.t0 < u0 || (k == 0 && q.t0 <= u0);
-  return starts_before && u1 < q.t1 ? static_cast<std::ptrdiff_t>(k) : -1;
+  const bool ends_after = u1 < q.t1 || (k + 1 == ps.size() && u1 <= q.t1);
+  return starts_before && ends_after ? static_cast<std::ptrdiff_t>(k) : -1;
+}
+
+// Asks the cache for body's piece at u0 and its trailing parts (two lines each), when the
+// cursor's piece index is given: the pairs of a block read the pieces of scattered bodies,
+// and asking for those of the pair a few places ahead while gathering this one lets their
+// misses overlap. Always inlined: GCC would find a separate function free of side effects
+// and drop its calls.
+[[gnu::always_inline]] inline void prefetch_piece(const Trajectories& m, std::span<const std::size_t> start_piece, std::uint32_t body) {
+  const std::size_t k = start_piece[body];
+  const char* q = reinterpret_cast<const char*>(m.pieces(body).data() + k);
+  const char* l = reinterpret_cast<const char*>(m.lows(body).data() + k);
+  __builtin_prefetch(q);
+  __builtin_prefetch(q + sizeof(Piece) - 1);
+  __builtin_prefetch(l);
+  __builtin_prefetch(l + sizeof(PieceLow) - 1);
 }
 
 }  // namespace
@@ -40,6 +58,10 @@ void sphere_sphere_narrow_batch(const NarrowInput& in, std::span<const BodyPair>
     block.count = count;
     for (std::size_t i = 0; i < count; ++i) {
       const BodyPair p = pairs[first + i];
+      if (constexpr std::size_t kAhead = 8; !in.start_piece.empty() && first + i + kAhead < pairs.size()) {
+        prefetch_piece(m, in.start_piece, pairs[first + i + kAhead].a);
+        prefetch_piece(m, in.start_piece, pairs[first + i + kAhead].b);
+      }
       const std::ptrdiff_t ka = single_piece(m, in.start_piece, p.a, u0, u1);
       const std::ptrdiff_t kb = ka < 0 ? -1 : single_piece(m, in.start_piece, p.b, u0, u1);
       bool ok = kb >= 0;

@@ -12,7 +12,7 @@
 //   - anything else: the scalar exact query.
 // A pair goes to the filter only when both bodies stay on one trajectory piece over the
 // step (the piece that contains t0 starts strictly before t0, or is the body's first,
-// and ends strictly after t1), their accelerations are equal (so the relative motion is
+// and ends strictly after t1, or at t1 when it is the body's last), their accelerations are equal (so the relative motion is
 // linear) and the scene is not periodic; every other pair (a wall reflection or an
 // acceleration change inside the step, a step starting at a break, periodic images) is
 // answered by the scalar query. The pieces are in.start_piece when given, else searched.

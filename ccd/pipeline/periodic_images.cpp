@@ -55,6 +55,7 @@ const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajector
   ctx_ = ctx;
   ctx_.start = states_;
   ctx_.exact = ctx.exact ? &local_ : nullptr;
+  ctx_.start_piece = {};  // the caller's piece indices are not the unwrapped paths'
   rigid_source_ = rigid ? rigid : ctx.rigid;
   if (rigid_source_) rigid_.assign_images(*rigid_source_, local_, owner_, ctx.t0, ctx.t1);
   ctx_.rigid = ctx.rigid ? &rigid_ : nullptr;

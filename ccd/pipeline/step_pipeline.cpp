@@ -53,7 +53,14 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   Stopwatch watch(times != nullptr);
 
   watch.start();
-  bound_->prepare(ctx, boxes_);
+  if (!start_piece.empty() && ctx.start_piece.empty() && ctx.exact == &motion) {
+    // The bounds built from the pieces walk from the cursor's pieces instead of searching.
+    StepContext with_pieces = ctx;
+    with_pieces.start_piece = start_piece;
+    bound_->prepare(with_pieces, boxes_);
+  } else {
+    bound_->prepare(ctx, boxes_);
+  }
   watch.stop(local.bound);
 
   watch.start();
@@ -64,13 +71,7 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   watch.start();
   out.passed.clear();
   out.earliest.clear();
-  for (const BodyPair& p : out.candidates) {
-    const PairTest t = bound_->test(p.a, p.b);
-    if (t.possible()) {
-      out.passed.push_back(p);
-      out.earliest.push_back(t.earliest);
-    }
-  }
+  bound_->test_pairs(out.candidates, out.passed, out.earliest);
   watch.stop(local.bound);
 
   watch.start();

@@ -12,7 +12,8 @@
 // Stages and their outputs (StepResult):
 //  1. bound.prepare(ctx) -> one box per body (boxes());
 //  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
-//  3. bound.test(a, b) for every candidate -> `passed` (status Possible), in candidate order;
+//  3. bound.test(a, b) for every candidate (through bound.test_pairs) -> `passed` (status
+//     Possible), in candidate order;
 //  4. narrow table entry for the pair's kinds (sphere x sphere: ccd/narrow/, exact; any
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
 //     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
@@ -108,7 +109,9 @@ class StepPipeline {
 
   /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
   /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
-  /// body's piece index at t0 (StateCursor::pieces), sparing the sample test a search.
+  /// body's piece index at t0 in `motion` (StateCursor::pieces), sparing the sample test
+  /// and the narrow phase a search, and the bound too when ctx.exact is `motion`
+  /// (StepContext::start_piece).
   /// `rigid`: the shapes and spin of a scene with non-sphere bodies (null: spheres only).
   void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
            std::span<const std::size_t> start_piece = {}, const RigidMotion* rigid = nullptr);
