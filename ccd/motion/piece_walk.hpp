@@ -27,9 +27,10 @@ inline std::size_t piece_index_from(const Trajectories& tr, std::size_t body, st
   return k;
 }
 
-/// Trajectories::swept_bounds(body, u0, u1) (every piece with t1 >= u0 and t0 <= u1, in
-/// order), given k = piece_index(body, u0): the pieces before k that end exactly at u0 are
-/// included, as there.
+/// The box of the body swept over [u0, u1]: every piece with t1 >= u0 and t0 <= u1, merged
+/// in order, widened by the radius. Any k at or before the first such piece works (0: what
+/// Trajectories::swept_bounds does); given k = piece_index(body, u0) the pieces before k
+/// that end exactly at u0 are included too.
 inline Aabb swept_bounds_from(const Trajectories& tr, std::size_t body, std::size_t k, double u0, double u1) {
   const auto ps = tr.pieces(body);
   while (k > 0 && ps[k - 1].t1 >= u0) --k;

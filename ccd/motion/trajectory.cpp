@@ -1,5 +1,7 @@
 #include <ccd/motion/trajectory.hpp>
 
+#include <ccd/motion/piece_walk.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -305,17 +307,7 @@ std::size_t Trajectories::piece_index(std::size_t body, double t) const {
 const Piece& Trajectories::piece_at(std::size_t body, double t) const { return pieces(body)[piece_index(body, t)]; }
 
 Aabb Trajectories::swept_bounds(std::size_t body, double u0, double u1) const {
-  const auto ps = pieces(body);
-  Aabb box;
-  bool first = true;
-  for (const Piece& q : ps) {
-    if (q.t1 < u0 || q.t0 > u1) continue;
-    const Aabb b = q.centre_bounds(std::max(u0, q.t0), std::min(u1, q.t1));
-    if (first) { box = b; first = false; } else { box.merge(b); }
-  }
-  box.lo.array() -= radius_[body];
-  box.hi.array() -= -radius_[body];
-  return box;
+  return swept_bounds_from(*this, body, 0, u0, u1);  // the walk from the first piece
 }
 
 }  // namespace ccd
