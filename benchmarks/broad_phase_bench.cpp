@@ -20,9 +20,9 @@
 // at 1e6, so it rebuilds with that sweep every frame) and rtree at 1,000,000 (about
 // 1.5 s per frame).
 #include "support/peer_protocol.hpp"
+#include "support/size_option.hpp"
 
 #include <ccd/broad_phase/registry.hpp>
-#include <ccd/util/integer_text.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -96,22 +96,15 @@ void run_mixed(benchmark::State& state, const ccd::BroadPhaseInfo* info, std::si
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes = {1000, 10000, 100000, 1000000};
-  bool slow = false;
+  auto args = ccdlab::bench::take_sizes(argc, argv, {1000, 10000, 100000, 1000000}, "broad_phase_bench", 100000000,
+                                        "1e8");
+  if (!args) return 2;
+  const std::vector<std::size_t>& sizes = args->sizes;
   std::vector<char*> rest;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
-      const auto list = ccd::parse_integer_list(argv[i] + 8, 1, 100000000);
-      if (!list) {
-        std::fprintf(stderr, "broad_phase_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=1000,10000\n");
-        return 2;
-      }
-      sizes.assign(list->begin(), list->end());
-    } else if (std::strcmp(argv[i], "--slow") == 0) {
-      slow = true;
-    } else {
-      rest.push_back(argv[i]);
-    }
+  bool slow = false;
+  for (char* a : args->rest) {
+    if (std::strcmp(a, "--slow") == 0) slow = true;
+    else rest.push_back(a);
   }
   std::size_t max_n = 0;
   for (std::size_t n : sizes) max_n = std::max(max_n, n);

@@ -8,8 +8,8 @@
 //
 //   grid_threads_bench [--sizes=100000,1000000] [benchmark flags]
 #include <ccd/broad_phase/grid.hpp>
-#include <ccd/util/integer_text.hpp>
 #include <benchmarks/support/peer_scene.hpp>
+#include <benchmarks/support/size_option.hpp>
 
 #include <benchmark/benchmark.h>
 
@@ -69,20 +69,10 @@ void run(benchmark::State& state, std::size_t n, unsigned threads) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes = {100000, 1000000};
-  std::vector<char*> rest;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
-      const auto list = ccd::parse_integer_list(argv[i] + 8, 1, 100000000);
-      if (!list) {
-        std::fprintf(stderr, "grid_threads_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=100000\n");
-        return 2;
-      }
-      sizes.assign(list->begin(), list->end());
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
+  auto args = ccdlab::bench::take_sizes(argc, argv, {100000, 1000000}, "grid_threads_bench", 100000000, "1e8");
+  if (!args) return 2;
+  const std::vector<std::size_t>& sizes = args->sizes;
+  std::vector<char*>& rest = args->rest;
   for (std::size_t n : sizes)
     for (unsigned t : {1u, 2u})
       benchmark::RegisterBenchmark(("grid_threads/" + std::to_string(n) + "/" + std::to_string(t)).c_str(), run, n, t)

@@ -13,7 +13,7 @@
 #include <ccd/scene/scene_binary.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <ccd/util/integer_text.hpp>
+#include <benchmarks/support/size_option.hpp>
 
 #include <benchmark/benchmark.h>
 #include <cmath>
@@ -90,20 +90,10 @@ void digest(benchmark::State& state, std::size_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::size_t> sizes = {100000, 1000000};
-  std::vector<char*> rest;
-  for (int i = 0; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--sizes=", 8) == 0) {
-      const auto list = ccd::parse_integer_list(argv[i] + 8, 1, 10000000);
-      if (!list) {
-        std::fprintf(stderr, "scene_io_bench: --sizes needs integers in [1, 1e7], e.g. --sizes=1000,10000\n");
-        return 2;
-      }
-      sizes.assign(list->begin(), list->end());
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
+  auto args = ccdlab::bench::take_sizes(argc, argv, {100000, 1000000}, "scene_io_bench", 10000000, "1e7");
+  if (!args) return 2;
+  const std::vector<std::size_t>& sizes = args->sizes;
+  std::vector<char*>& rest = args->rest;
   std::string tmpl = (std::filesystem::temp_directory_path() / "scene_io_bench-XXXXXX").string();
   if (!::mkdtemp(tmpl.data())) {
     std::perror("scene_io_bench: mkdtemp");
