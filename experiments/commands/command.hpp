@@ -29,4 +29,11 @@ bool wants_help(std::span<const std::string> args);
 /// Exit status for usage and input errors.
 constexpr int kExitBadInput = 2;
 
+/// Called from a `catch (...)` handler of command NAME: prints "ccdlab NAME: ..." for the
+/// exception being handled and gives the exit status: kExitBadInput for an input error
+/// (ccd::InputError), 1 for running out of memory ("out of memory", then
+/// `out_of_memory_detail`, e.g. what was being done) or another std::exception. Anything
+/// else is rethrown.
+int command_failed(std::string_view name, const std::string& out_of_memory_detail = {});
+
 }  // namespace ccdlab

@@ -1,8 +1,12 @@
 #include "command.hpp"
 
+#include <ccd/scene/input_error.hpp>
 #include <ccdlab_git_hash.hpp>
 
 #include <algorithm>
+#include <exception>
+#include <iostream>
+#include <new>
 
 namespace ccdlab {
 
@@ -29,6 +33,22 @@ std::span<const Command> commands() {
 }
 
 std::string version_string() { return std::string(CCDLAB_VERSION) + " (git " + CCDLAB_GIT_HASH + ")"; }
+
+int command_failed(std::string_view name, const std::string& out_of_memory_detail) {
+  try {
+    throw;
+  } catch (const ccd::InputError& e) {
+    std::cerr << "ccdlab " << name << ": " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ccdlab " << name << ": out of memory" << (out_of_memory_detail.empty() ? "" : " ")
+              << out_of_memory_detail << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "ccdlab " << name << ": " << e.what() << "\n";
+    return 1;
+  }
+}
 
 bool wants_help(std::span<const std::string> args) {
   return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "-h" || a == "--help"; });

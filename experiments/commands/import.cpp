@@ -101,15 +101,8 @@ int run_import(std::span<const std::string> args) {
         << "ccdlab import: " << imported.scene.bodies.size() << " bodies, " << imported.frames << " frames, "
         << changes << " velocity changes, horizon " << imported.scene.horizon << " s (scene time 0 = t "
         << imported.time_origin << " of the file) -> " << out_path << "\n";
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab import: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab import: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab import: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("import");
   }
   return 0;
 }

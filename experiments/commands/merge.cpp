@@ -43,15 +43,8 @@ int run_merge(std::span<const std::string> args) {
     output.commit(merged.dump(1) + "\n");
     (out == "-" ? std::cerr : std::cout) << "\n" << summary_text(merged) << "\n";
     if (out != "-") ccd::write_file_atomically(summary_path(out), summary_markdown(merged));
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab merge: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab merge: out of memory reading " << inputs.size() << " shard files\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab merge: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("merge", "reading " + std::to_string(inputs.size()) + " shard files");
   }
   if (out != "-") std::cout << "results: " << out << "\nsummary: " << summary_path(out) << "\n";
   return 0;

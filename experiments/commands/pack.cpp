@@ -74,15 +74,8 @@ int run_pack(std::span<const std::string> args) {
     } else {
       output.commit(ccd::scene_to_binary(scene, scene_path));
     }
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab pack: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab pack: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab pack: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("pack");
   }
   return 0;
 }

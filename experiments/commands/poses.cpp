@@ -107,15 +107,8 @@ int run_poses(std::span<const std::string> args) {
       }
     }
     output.commit(text);
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab poses: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab poses: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab poses: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("poses");
   }
   return 0;
 }

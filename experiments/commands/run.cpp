@@ -138,15 +138,8 @@ int run_run(std::span<const std::string> args) {
       return run_cloth(experiment_path, out_path, options.threads, options.quiet, truth_cache);
     }
     if (!truth_cache.empty()) return usage_error("--truth-cache applies to cloth experiments only");
-  } catch (const ccd::InputError& err) {
-    std::cerr << "ccdlab run: " << err.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab run: out of memory running " << experiment_path << "\n";
-    return 1;
-  } catch (const std::exception& err) {
-    std::cerr << "ccdlab run: " << err.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("run", "running " + experiment_path);
   }
 
   // What is being done, for the one line that says what was too big if memory runs out.
@@ -237,15 +230,8 @@ int run_run(std::span<const std::string> args) {
                 << (flagged ? ", " + std::to_string(flagged) + " records FAILED the self-check" : std::string())
                 << "\n";
     }
-  } catch (const ccd::InputError& err) {
-    std::cerr << "ccdlab run: " << err.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab run: out of memory " << doing << "\n";
-    return 1;
-  } catch (const std::exception& err) {
-    std::cerr << "ccdlab run: " << err.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("run", doing);
   }
   if (out_path != "-") std::cout << "results: " << out_path << "\nsummary: " << summary_file << "\n";
   return 0;

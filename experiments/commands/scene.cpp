@@ -83,15 +83,8 @@ int run_scene(std::span<const std::string> args) {
   } catch (const std::invalid_argument& e) {
     std::cerr << "ccdlab scene: " << e.what() << "\n";
     return kExitBadInput;
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab scene: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab scene: out of memory generating " << generator << " with bodies=" << bodies << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab scene: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("scene", "generating " + generator + " with bodies=" + std::to_string(bodies));
   }
   return 0;
 }

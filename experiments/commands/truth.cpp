@@ -194,15 +194,8 @@ int run_truth(std::span<const std::string> args) {
                   secs(start, done), secs(start, loaded), secs(loaded, built), secs(built, done), st.threads);
     std::cout << "time         " << time_text << "\n";
     if (!out_path.empty()) std::cout << "written      " << out_path << "\n";
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab truth: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab truth: out of memory " << doing << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab truth: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("truth", doing);
   }
   return 0;
 }

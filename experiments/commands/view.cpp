@@ -105,15 +105,8 @@ int run_view(std::span<const std::string> args) {
     }
     output.commit(view_page(data));
     if (!output.is_stdout()) std::cout << "written      " << out_path << "\n";
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab view: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::bad_alloc&) {
-    std::cerr << "ccdlab view: out of memory\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab view: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("view");
   }
   return 0;
 }
