@@ -110,6 +110,18 @@ bool check_stored_truth(const ccd::TruthFile& truth, const ccd::Scene& scene, co
       throw ccd::InputError(file, "events[" + std::to_string(i) + "].b",
                             "body " + std::to_string(truth.events[i].b) + " does not exist (the scene has " +
                                 std::to_string(scene.bodies.size()) + " bodies)");
+  for (std::size_t i = 0; i < truth.static_events.size(); ++i) {
+    const ccd::StaticEvent& s = truth.static_events[i];
+    const std::string at = "static_events[" + std::to_string(i) + "]";
+    if (s.body >= scene.bodies.size())
+      throw ccd::InputError(file, at + ".body",
+                            "body " + std::to_string(s.body) + " does not exist (the scene has " +
+                                std::to_string(scene.bodies.size()) + " bodies)");
+    if (s.polygon >= scene.scenery.size())
+      throw ccd::InputError(file, at + ".polygon",
+                            "polygon " + std::to_string(s.polygon) + " does not exist (the scene has " +
+                                std::to_string(scene.scenery.size()) + " polygons)");
+  }
   return truth.version >= 2;
 }
 
