@@ -163,6 +163,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   } else if (rigid) {
     ccd::RigidTruthOptions ropts;
     ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
+    ropts.cancel = options.cancel;
     ccd::RigidTruthResult r = ccd::compute_rigid_truth(*rigid, ropts);
     truth_error = ccd::largest_error(r.errors);
     truth_events = std::move(r.events);

@@ -281,6 +281,7 @@ RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptio
   std::vector<std::vector<EventError>> er(runs.size());
   std::vector<std::size_t> evals(runs.size(), 0);
   parallel_for(runs.size(), threads, [&](std::size_t r, unsigned) {
+    if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;  // cancelled: skip the rest
     const Run& run = runs[r];
     if (!options.generic_spheres && m.kind(run.a) == ShapeKind::Sphere && m.kind(run.b) == ShapeKind::Sphere) {
       std::vector<ContactInterval> iv;

@@ -43,6 +43,7 @@
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -61,6 +62,9 @@ struct RigidTruthOptions {
   bool generic_spheres = false;
   /// Distance evaluations allowed per (pair, run); past it the rest is left unresolved.
   std::size_t max_evaluations = 1000000;
+  /// When set and true, the pair windows not yet started are skipped (a cancelled run: the
+  /// result is incomplete and is to be discarded). Null: never cancelled.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RigidTruthStats {
