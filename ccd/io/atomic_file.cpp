@@ -2,6 +2,7 @@
 
 #include <ccd/scene/input_error.hpp>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -45,6 +46,15 @@ int claim_slot(const std::string& path) {
   }
   throw std::runtime_error(path + ": more than " + std::to_string(g_slots.size()) + " output files open at once");
 }
+
+// Temporary folders and the files written in them, for the signal handlers (same states).
+struct FolderSlot {
+  std::atomic<int> state{Free};
+  std::atomic<int> files{0};
+  char folder[4096];
+  char file[16][4096];
+};
+std::array<FolderSlot, 4> g_folders;
 
 void release_slot(int slot) {
   if (slot >= 0) g_slots[static_cast<std::size_t>(slot)].state.store(Free);
@@ -142,12 +152,17 @@ void OutputFile::discard() noexcept {
 }
 
 void OutputFile::commit(std::string_view text) {
-  if (committed_) throw std::logic_error(path_ + ": written twice");
+  stage(text);
+  publish();
+}
+
+void OutputFile::stage(std::string_view text) {
+  if (committed_ || staged_) throw std::logic_error(path_ + ": written twice");
   if (is_stdout()) {
     std::cout << text;
     std::cout.flush();
     if (!std::cout) throw std::runtime_error("standard output: cannot write");
-    committed_ = true;
+    staged_ = true;
     return;
   }
   auto fail = [&](const char* what) {
@@ -168,6 +183,19 @@ void OutputFile::commit(std::string_view text) {
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0) fail("cannot write");
+  staged_ = true;
+}
+
+void OutputFile::publish() {
+  if (!staged_ || committed_) throw std::logic_error(path_ + ": published before it was written, or twice");
+  committed_ = true;
+  if (is_stdout()) return;
+  auto fail = [&](const char* what) {
+    const std::string why = reason();
+    committed_ = false;
+    discard();
+    throw std::runtime_error(path_ + ": " + what + ": " + why);
+  };
   // The destination may have changed since it was checked: still never rename over
   // anything but a regular file.
   struct stat st {};
@@ -179,7 +207,6 @@ void OutputFile::commit(std::string_view text) {
   temporary_.clear();
   release_slot(slot_);
   slot_ = -1;
-  committed_ = true;
   // Make the rename itself durable (best effort: some file systems refuse a folder fsync).
   const fs::path folder = fs::path(target_).parent_path();
   const int dir = ::open(folder.empty() ? "." : folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -187,6 +214,12 @@ void OutputFile::commit(std::string_view text) {
     ::fsync(dir);
     ::close(dir);
   }
+}
+
+void commit_together(std::span<OutputFile* const> files, std::span<const std::string_view> texts) {
+  if (files.size() != texts.size()) throw std::logic_error("commit_together: one text per file");
+  for (std::size_t i = 0; i < files.size(); ++i) files[i]->stage(texts[i]);
+  for (OutputFile* f : files) f->publish();
 }
 
 void write_file_atomically(const std::string& path, std::string_view text) { OutputFile(path).commit(text); }
@@ -208,6 +241,41 @@ void install_temporary_file_cleanup() {
 void remove_pending_temporary_files() noexcept {
   for (Slot& s : g_slots)
     if (s.state.load() == Named) ::unlink(s.path);
+  for (FolderSlot& f : g_folders) {
+    if (f.state.load() != Named) continue;
+    const int n = std::min(f.files.load(), static_cast<int>(std::size(f.file)));
+    for (int k = 0; k < n; ++k) ::unlink(f.file[k]);
+    ::rmdir(f.folder);
+  }
+}
+
+int register_temporary_folder(const std::string& folder) noexcept {
+  if (folder.size() >= sizeof(FolderSlot::folder)) return -1;
+  for (std::size_t i = 0; i < g_folders.size(); ++i) {
+    int expected = Free;
+    if (g_folders[i].state.compare_exchange_strong(expected, Claimed)) {
+      std::memcpy(g_folders[i].folder, folder.c_str(), folder.size() + 1);
+      g_folders[i].files.store(0);
+      g_folders[i].state.store(Named);
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+
+void register_temporary_folder_file(int slot, const std::string& path) noexcept {
+  if (slot < 0 || path.size() >= sizeof(FolderSlot::file[0])) return;
+  FolderSlot& f = g_folders[static_cast<std::size_t>(slot)];
+  const int n = f.files.load();
+  for (int k = 0; k < std::min(n, static_cast<int>(std::size(f.file))); ++k)
+    if (path == f.file[k]) return;
+  if (n >= static_cast<int>(std::size(f.file))) return;
+  std::memcpy(f.file[n], path.c_str(), path.size() + 1);
+  f.files.store(n + 1);  // the name is complete before a handler may read it
+}
+
+void release_temporary_folder(int slot) noexcept {
+  if (slot >= 0) g_folders[static_cast<std::size_t>(slot)].state.store(Free);
 }
 
 }  // namespace ccd

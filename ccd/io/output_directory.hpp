@@ -5,11 +5,14 @@
 // if the destination exists it must be a folder that is empty or holds `marker` (a file
 // that a previous run of the same command wrote); anything else is refused, so a command
 // never replaces a folder it did not write. The files are written into a temporary folder
-// DIR.tmp.PID beside the destination; commit() renames it to DIR. An existing DIR is first
-// renamed to DIR.old.PID and removed after the new folder is in place: a reader sees the
-// old folder or the whole new one (or, for an instant, none), never a part of one.
-// Every exit without commit() (errors, exceptions) removes the temporary folder; a process
-// killed by a signal may leave DIR.tmp.PID behind.
+// DIR.tmp.PID beside the destination, each flushed to disk; commit() renames it to DIR. An
+// existing DIR is exchanged with it in one step (renameat2 RENAME_EXCHANGE) and removed
+// after: a reader, or a process killed at any point, sees the old folder or the whole new
+// one, never a part of one (a file system without the exchange: the old folder is renamed
+// to DIR.old.PID first, so for an instant there is none).
+// Every exit without commit() (errors, exceptions) removes the temporary folder, and so do
+// the signal handlers of ccd::install_temporary_file_cleanup (the folder and the files
+// named through file() and write()); only SIGKILL may leave DIR.tmp.PID behind.
 #include <string>
 #include <string_view>
 
@@ -35,6 +38,7 @@ class OutputDirectory {
  private:
   std::string path_;
   std::string temporary_;
+  int slot_ = -1;  // the signal handlers' registration of the temporary folder
   bool committed_ = false;
 };
 
