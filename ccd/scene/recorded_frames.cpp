@@ -10,7 +10,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace ccd {
 namespace {
@@ -293,14 +296,12 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
 
   // Shapes: the named ones, then inline specs as they are first used.
   nlohmann::json shapes = options.shapes.is_array() ? options.shapes : nlohmann::json::array();
-  auto known = [&](const std::string& name) {
-    return std::any_of(shapes.begin(), shapes.end(), [&](const nlohmann::json& s) {
-      return s.is_object() && s.contains("name") && s["name"] == name;
-    });
-  };
+  std::unordered_set<std::string> known;  // names given or added: linear in the shapes
+  for (const nlohmann::json& sh : shapes)
+    if (sh.is_object() && sh.contains("name") && sh["name"].is_string()) known.insert(sh["name"].get<std::string>());
   for (const std::string& l : order) {
     const Track& tr = tracks[l];
-    if (tr.shape.empty() || known(tr.shape)) continue;
+    if (tr.shape.empty() || !known.insert(tr.shape).second) continue;
     const auto j = inline_shape(tr.shape, file, "line " + std::to_string(tr.size_line) + ": shape");
     if (!j)
       fail(tr.size_line, "shape", "unknown shape " + in_quotes(tr.shape) +
@@ -317,6 +318,8 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
                                    {"bodies", nlohmann::json::array()}};
     s.shapes = scene_from_json(holder, options.shapes_file).shapes;
   }
+  std::unordered_map<std::string, std::size_t> shape_index;
+  for (std::size_t k = 0; k < s.shapes.size(); ++k) shape_index.emplace(s.shapes[k].name, k);
   const bool any_shape = std::any_of(order.begin(), order.end(), [&](const std::string& l) { return !tracks[l].shape.empty(); });
 
   for (const std::string& label : order) {
@@ -349,8 +352,7 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
     RigidBody rb;
     const bool shaped = !tr.shape.empty();
     if (shaped) {
-      const auto found = std::find_if(s.shapes.begin(), s.shapes.end(), [&](const Shape& x) { return x.name == tr.shape; });
-      rb.shape = static_cast<std::int32_t>(found - s.shapes.begin());
+      rb.shape = static_cast<std::int32_t>(shape_index.at(tr.shape));
       rb.orientation = tr.frames.front().q;
     }
     Eigen::Quaterniond q_at = rb.orientation;  // the model's orientation at tau[k]

@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <unordered_map>
 #include <cstdio>
 
 namespace ccd {
@@ -160,14 +162,14 @@ Scene scene_from_json(const json& j, const std::string& file) {
     if (auto b = it->find("boundary"); b != it->end()) box.boundary = boundary_from_json(r, *b);
     s.box = box;
   }
+  std::unordered_map<std::string, std::size_t> shape_index;  // name -> index: linear in the shapes
   if (auto it = j.find("shapes"); it != j.end()) {
     if (!v2) r.fail("shapes", "needs format \"ccdlab-scene/2\"");
     if (!it->is_array()) r.fail("shapes", "must be an array");
     for (std::size_t i = 0; i < it->size(); ++i) {
       Shape sh = shape_from_json(r, (*it)[i], shape_path(i));
-      for (std::size_t k = 0; k < s.shapes.size(); ++k)
-        if (s.shapes[k].name == sh.name)
-          r.fail(shape_path(i) + ".name", "\"" + sh.name + "\" is already the name of " + shape_path(k));
+      const auto [at, added] = shape_index.emplace(sh.name, i);
+      if (!added) r.fail(shape_path(i) + ".name", "\"" + sh.name + "\" is already the name of " + shape_path(at->second));
       s.shapes.push_back(std::move(sh));
     }
   }
@@ -187,10 +189,10 @@ Scene scene_from_json(const json& j, const std::string& file) {
     if (auto it = b.find("shape"); it != b.end()) {
       if (!v2) r.fail(p + ".shape", "needs format \"ccdlab-scene/2\"");
       const std::string name = r.string(*it, p + ".shape");
-      const auto found = std::find_if(s.shapes.begin(), s.shapes.end(), [&](const Shape& x) { return x.name == name; });
-      if (found == s.shapes.end()) r.fail(p + ".shape", "unknown shape \"" + name + "\" (not in shapes)");
+      const auto found = shape_index.find(name);
+      if (found == shape_index.end()) r.fail(p + ".shape", "unknown shape \"" + name + "\" (not in shapes)");
       if (b.contains("radius")) r.fail(p + ".radius", "not allowed with shape (the shape gives the size)");
-      rigid.shape = static_cast<std::int32_t>(found - s.shapes.begin());
+      rigid.shape = static_cast<std::int32_t>(found->second);
     } else {
       body.radius = r.number(r.require(b, "radius", p), p + ".radius");
     }
