@@ -2,6 +2,7 @@
 #include "experiment.hpp"
 
 #include <cloth/cull/cullers.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/util/nearest_name.hpp>
 
@@ -107,7 +108,7 @@ json cloth_experiment_to_json(const ClothExperiment& e) {
   json j = e.source;
   j["format"] = kClothExperimentFormat;
   j["name"] = e.name;
-  j["scene"] = e.scene_path.empty() ? e.scene : e.scene_path;
+  j["scene"] = e.scene_path.empty() ? e.scene : ccd::escape_invalid_utf8(e.scene_path);
   if (e.scene_path.empty()) j["n"] = e.n;
   j["steps"] = e.steps > 0 ? json(e.steps) : json(nullptr);
   j["thickness"] = e.thickness >= 0.0 ? json(e.thickness) : json(nullptr);

@@ -3,6 +3,7 @@
 #include "method.hpp"
 #include "generators/registry.hpp"
 
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
@@ -225,7 +226,7 @@ json experiment_to_json(const Experiment& e) {
   json j = e.source;
   j["format"] = "ccdlab-experiment/1";
   j["name"] = e.name;
-  if (!e.scene_path.empty()) j["scene"] = e.scene_path; else j["scene"] = e.scene_generator;
+  if (!e.scene_path.empty()) j["scene"] = ccd::escape_invalid_utf8(e.scene_path); else j["scene"] = e.scene_generator;
   j["dt"] = e.dt;
   json hz = json::array();
   for (std::size_t i = 0; i < e.dt.size(); ++i)

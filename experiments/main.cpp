@@ -3,14 +3,45 @@
 
 #include <ccd/io/atomic_file.hpp>
 
+#include <cstdio>
 #include <exception>
 #include <iostream>
 #include <new>
 #include <string>
+#include <unistd.h>
 #include <vector>
+
+namespace {
+
+// The running command's name, for the terminate handler (written before the command runs).
+char g_command[64] = "ccdlab";
+
+// The last line of defence: an exception that reaches std::terminate (one thrown where no
+// handler may catch it, e.g. std::bad_alloc while a huge JSON value is destroyed under a
+// memory limit) still ends with one line, status 1 for out of memory, and no temporary
+// file, never an abort with a core dump.
+[[noreturn]] void on_terminate() noexcept {
+  ccd::remove_pending_temporary_files();
+  const char* what = "internal error";
+  if (const std::exception_ptr e = std::current_exception()) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::bad_alloc&) {
+      what = "out of memory";
+    } catch (...) {
+    }
+  }
+  char line[128];  // no allocation: memory may have run out
+  const int n = std::snprintf(line, sizeof line, "%s: %s\n", g_command, what);
+  [[maybe_unused]] const auto written = ::write(STDERR_FILENO, line, n > 0 ? static_cast<std::size_t>(n) : 0);
+  ::_exit(1);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   ccd::install_temporary_file_cleanup();  // no FILE.tmp.* left behind by a signal
+  std::set_terminate(on_terminate);
   std::vector<std::string> args(argv + 1, argv + argc);
   auto print_help = [](std::ostream& out) {
     out << "ccdlab " << ccdlab::version_string()
@@ -36,6 +67,7 @@ int main(int argc, char** argv) {
   }
   for (const ccdlab::Command& c : ccdlab::commands()) {
     if (c.name != args[0]) continue;
+    std::snprintf(g_command, sizeof g_command, "ccdlab %.*s", static_cast<int>(c.name.size()), c.name.data());
     std::vector<std::string> rest(args.begin() + 1, args.end());
     if (ccdlab::wants_help(rest)) {
       std::cout << c.usage;

@@ -5,6 +5,7 @@
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
 #include <cloth/truth/mesh_truth_file.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
 
@@ -241,7 +242,7 @@ json run_cloth_experiment(const ClothExperiment& e, const ccd::cloth::ClothScene
   json out;
   out["format"] = "ccdlab-cloth-results/1";
   out["experiment"] = cloth_experiment_to_json(e);
-  out["scene"] = {{"source", e.scene_path.empty() ? e.scene : e.scene_path},
+  out["scene"] = {{"source", e.scene_path.empty() ? e.scene : ccd::escape_invalid_utf8(e.scene_path)},
                   {"particles", scene.particle_count()},
                   {"triangles", m.mesh.triangles.size()},
                   {"edges", m.mesh.edges.size()},
@@ -260,7 +261,7 @@ json run_cloth_experiment(const ClothExperiment& e, const ccd::cloth::ClothScene
                   {"certified_within", m.truth.counts.within},
                   {"certified_apart", m.truth.counts.apart},
                   {"exact_pairs", m.truth.counts.exact},
-                  {"file", m.truth_file.empty() ? json(nullptr) : json(m.truth_file)},
+                  {"file", m.truth_file.empty() ? json(nullptr) : json(ccd::escape_invalid_utf8(m.truth_file))},
                   {"reused", m.truth_reused}};
   out["environment"] = environment_json(options.threads);
   out["records"] = json::array();

@@ -6,6 +6,7 @@
 #include "progress.hpp"
 #include "runner.hpp"
 
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
@@ -69,7 +70,7 @@ json scene_summary(const Experiment& e, const ccd::Scene& s, const ccd::Trajecto
       rmax = std::max(rmax, b.radius);
     }
   }
-  json j = {{"source", e.scene_path.empty() ? json(e.scene_generator) : json(e.scene_path)},
+  json j = {{"source", e.scene_path.empty() ? json(e.scene_generator) : json(ccd::escape_invalid_utf8(e.scene_path))},
             {"bodies", s.bodies.size()},
             {"horizon", s.horizon},
             {"motion", ccd::to_string(s.motion_kind())},

@@ -1,7 +1,9 @@
 #include "view_data.hpp"
 
 #include "results_file.hpp"
+#include "work_estimate.hpp"
 
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/motion/rotation.hpp>
 #include <ccd/motion/trajectory.hpp>
@@ -14,6 +16,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <new>
+#include <sys/resource.h>
 
 namespace ccdlab {
 namespace {
@@ -32,6 +36,36 @@ void append(json& out, const ccd::Vec3& v) {
 }
 
 json vec(const ccd::Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+// The sampled poses of a free tumble: at most 0.05 rad apart, 1 to 100000 per piece.
+int tumble_samples(const ccd::RotationPiece& q) {
+  const double turn = q.max_rate() * (q.t1 - q.t0);
+  return static_cast<int>(std::clamp(std::ceil(turn / 0.05), 1.0, 100000.0));
+}
+
+// Refuses, before any of it is built, a page of more than kMaxViewEntries entries (one per
+// trajectory piece and per rotation piece or sampled pose) unless forced.
+void check_page_size(const ccd::Scene& scene, const ccd::Trajectories& traj, const ccd::Rotations& rot,
+                     const ViewInputs& in) {
+  double entries = static_cast<double>(traj.total_pieces()), tumbles = 0.0;
+  if (!rot.empty())
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+      for (const ccd::RotationPiece& q : rot.pieces(i)) {
+        const double k = q.constant_spin() ? 1.0 : tumble_samples(q);
+        entries += k;
+        if (!q.constant_spin()) tumbles += k;
+      }
+  check_work({entries, kMaxViewEntries, "page entries",
+              std::to_string(scene.bodies.size()) + " bodies, " + std::to_string(traj.total_pieces()) +
+                  " trajectory pieces, " + work_number(tumbles) + " sampled poses of free spins"},
+             in.force, in.scene_file, "bodies");
+  // Under an address-space limit (ulimit -v), a page that cannot fit is out of memory now,
+  // not after minutes of building: about 400 bytes an entry as JSON values and as text.
+  struct rlimit limit {};
+  if (::getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY &&
+      entries * 400.0 > static_cast<double>(limit.rlim_cur))
+    throw std::bad_alloc();
+}
 
 // The records of a results file, with what the page shows of each (its missed contacts
 // checked against the scene's body count and horizon).
@@ -94,10 +128,12 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
         throw ccd::InputError(in.truth_file, "events[" + std::to_string(i) + "].b", "is not a body of the scene");
 
   const ccd::Trajectories traj(scene);
+  const ccd::Rotations rot(scene);
+  check_page_size(scene, traj, rot, in);
   json data;
   data["format"] = kViewDataFormat;
   data["kind"] = "bodies";
-  data["scene_file"] = in.scene_file;
+  data["scene_file"] = ccd::escape_invalid_utf8(in.scene_file);
   data["horizon"] = scene.horizon;
   data["gravity"] = vec(scene.gravity);
   data["max_acceleration"] = scene.max_acceleration();
@@ -119,7 +155,6 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
   // Per body: radius, shape index (-1: a plain sphere), centre pieces
   // [t0, t1, p, v, a] and, for spinning shapes, rotation pieces [t0, t1, q (w x y z), omega].
   json radius = json::array(), shape = json::array(), pieces = json::array(), rotations = json::array();
-  const ccd::Rotations rot(scene);
   for (std::size_t i = 0; i < n; ++i) {
     radius.push_back(shown(scene.bodies[i].radius));
     shape.push_back(scene.rigid.empty() ? -1 : scene.rigid[i].shape);
@@ -142,8 +177,7 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
         }
         // A free tumble: sampled poses (at most 0.05 rad apart), each pair joined by the
         // constant spin that turns one into the next.
-        const double turn = q.max_rate() * (q.t1 - q.t0);
-        const int steps = static_cast<int>(std::clamp(std::ceil(turn / 0.05), 1.0, 100000.0));
+        const int steps = tumble_samples(q);
         ccd::Quat a = q.orientation(q.t0);
         for (int k = 0; k < steps; ++k) {
           const double s0 = q.t0 + (q.t1 - q.t0) * k / steps, s1 = k + 1 == steps ? q.t1 : q.t0 + (q.t1 - q.t0) * (k + 1) / steps;
@@ -163,7 +197,7 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
   data["bodies"] = {{"count", n}, {"radius", std::move(radius)}, {"shape", std::move(shape)},
                     {"pieces", std::move(pieces)}, {"rotations", std::move(rotations)}};
 
-  data["truth_file"] = in.truth ? json(in.truth_file) : json(nullptr);
+  data["truth_file"] = in.truth ? json(ccd::escape_invalid_utf8(in.truth_file)) : json(nullptr);
   data["truth"] = json(nullptr);
   if (in.truth) {
     json events = json::array();
@@ -171,7 +205,7 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
       events.push_back(json::array({e.a, e.b, e.enter, e.exit}));
     data["truth"] = std::move(events);
   }
-  data["results_file"] = in.results ? json(in.results_file) : json(nullptr);
+  data["results_file"] = in.results ? json(ccd::escape_invalid_utf8(in.results_file)) : json(nullptr);
   data["runs"] = in.results ? runs_of(*in.results, in.results_file, n, scene.horizon) : json::array();
   return data;
 }
@@ -187,7 +221,7 @@ json cloth_view_data(const json& j, const std::string& file) {
   json data;
   data["format"] = kViewDataFormat;
   data["kind"] = "cloth";
-  data["scene_file"] = file;
+  data["scene_file"] = ccd::escape_invalid_utf8(file);
   data["nx"] = nx;
   data["ny"] = ny;
   const json& tris = r.require(j, "triangles", "");

@@ -27,10 +27,16 @@ struct ViewInputs {
   std::string truth_file;                 ///< empty: none
   std::optional<nlohmann::json> results;  ///< a parsed ccdlab-results/2 document
   std::optional<ccd::TruthFile> truth;
+  bool force = false;  ///< build a page past kMaxViewEntries (experiments/work_estimate.hpp)
 };
 
+/// The page entries (trajectory pieces and sampled rotation pieces) `ccdlab view` writes
+/// without --force: each is about 150 bytes of page, so the limit is about 750 MB.
+inline constexpr double kMaxViewEntries = 5e6;
+
 /// The page's data for a body scene (`ccdlab-scene/1` or `/2`). Throws ccd::InputError
-/// (see the header comment) and ccd::TooManyPieces.
+/// (see the header comment; also when the page would hold more than kMaxViewEntries
+/// entries and `inputs.force` is false) and ccd::TooManyPieces.
 nlohmann::json body_view_data(const ccd::Scene& scene, const ViewInputs& inputs);
 
 /// The page's data for the frames a cloth run wrote (`ccdlab-cloth-frames/1`, from

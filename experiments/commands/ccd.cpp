@@ -2,10 +2,13 @@
 // public CCD benchmark's format and measures misses, false positives and time per query.
 #include "command.hpp"
 
+#include "../work_estimate.hpp"
+
 #include <cloth/ccd/hard_queries.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 #include <cloth/io/query_file.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
@@ -22,6 +25,10 @@ namespace ccdlab {
 namespace {
 
 using ccd::cloth::PrimitivePair;
+
+// A query file is 8 rows of 7 integers per query, about 100 bytes and more: 1e9 bytes
+// is ten million queries or more (minutes of the inclusion kernel, hours exactly).
+constexpr double kMaxQueryFileBytes = 1e9;
 
 std::optional<double> parse_non_negative(const std::string& s) {
   if (s.empty()) return std::nullopt;
@@ -50,7 +57,7 @@ int run_ccd(std::span<const std::string> args) {
     return kExitBadInput;
   };
   std::string input, out_path, kind_text;
-  bool exact = false, write_hard = false;
+  bool exact = false, write_hard = false, force = false;
   ccd::cloth::TriangleCcdOptions options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -77,6 +84,8 @@ int run_ccd(std::span<const std::string> args) {
       exact = true;
     } else if (a == "--write-hard") {
       write_hard = true;
+    } else if (a == "--force") {
+      force = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (input.empty()) {
@@ -104,6 +113,7 @@ int run_ccd(std::span<const std::string> args) {
     if (input.empty()) return usage_error("need a query file");
     std::optional<ccd::OutputFile> output;
     if (!out_path.empty()) output.emplace(out_path, std::vector<std::string>{input});
+    check_input_file(input, kMaxQueryFileBytes, force);  // a regular file, not /dev/zero or a folder
     const ccd::cloth::QueryFile file = ccd::cloth::read_query_file(input);
     const mpq_class sep(options.separation);  // exact
     const mpq_class sep2 = sep * sep;
@@ -147,7 +157,7 @@ int run_ccd(std::span<const std::string> args) {
     if (output) {
       nlohmann::json j;
       j["format"] = "ccdlab-ccd/1";
-      j["file"] = input;
+      j["file"] = ccd::escape_invalid_utf8(input);
       j["kind"] = std::string(to_string(kind));
       j["method"] = exact ? "exact" : "inclusion";
       j["options"] = {{"separation", options.separation}, {"tolerance", options.tolerance}, {"max_boxes", options.max_boxes}};
@@ -162,12 +172,8 @@ int run_ccd(std::span<const std::string> args) {
       output->commit(j.dump(1) + "\n");
       if (out_path != "-") std::cout << "results: " << out_path << "\n";
     }
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab ccd: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab ccd: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("ccd", "running the queries of " + input);
   }
   return 0;
 }
@@ -177,7 +183,7 @@ int run_ccd(std::span<const std::string> args) {
 extern const Command kCcdCommand = {
     "ccd", "run vertex-face or edge-edge CCD queries from a benchmark query file",
     "usage: ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json] [--separation D] [--tolerance T]\n"
-    "                  [--max-boxes N] [--exact]\n"
+    "                  [--max-boxes N] [--exact] [--force]\n"
     "       ccdlab ccd --write-hard --kind vf|ee -o FILE.csv\n"
     "\n"
     "Reads queries in the public CCD benchmark's format (8 rows per query, 7 integer columns:\n"
@@ -190,6 +196,8 @@ extern const Command kCcdCommand = {
     "--tolerance T    image width counted as contact, relative to the query's extent (1e-9)\n"
     "--max-boxes N    budget of parameter boxes per query (20000); spent = contact\n"
     "--write-hard     writes ccdlab's hand-built hard queries (expected result decided exactly)\n"
+    "--force          read a query file larger than 1e9 bytes (refused before the work\n"
+    "                 otherwise); FILE.csv must be a regular file (not a folder or a device)\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_ccd};

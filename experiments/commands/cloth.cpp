@@ -8,12 +8,14 @@
 
 #include <cloth/cull/cullers.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -30,7 +32,7 @@ int run_cloth(std::span<const std::string> args) {
   };
   std::string scene_arg, out_path;
   int n = 32, every = 10;
-  bool cull = false;
+  bool cull = false, force = false;
   std::optional<int> steps;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -57,6 +59,8 @@ int run_cloth(std::span<const std::string> args) {
       every = *v;
     } else if (a == "--cull") {
       cull = true;
+    } else if (a == "--force") {
+      force = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_arg.empty()) {
@@ -75,6 +79,8 @@ int run_cloth(std::span<const std::string> args) {
     ccd::cloth::ClothScene scene =
         builtin ? ccd::cloth::builtin_cloth_scene(scene_arg, n) : ccd::cloth::read_cloth_scene(scene_arg);
     if (steps) scene.steps = *steps;
+    // Every E-th state is kept as JSON numbers and then as text: about 110 bytes a particle.
+    check_cloth_work(scene, scene_arg, std::floor(scene.steps / static_cast<double>(every)) + 2.0, 110.0, force);
     ccd::cloth::ClothSimulator sim(scene);
     nlohmann::json frames = nlohmann::json::array();
     auto record = [&] {
@@ -109,7 +115,7 @@ int run_cloth(std::span<const std::string> args) {
     }
     nlohmann::json j;
     j["format"] = "ccdlab-cloth-frames/1";
-    j["scene"] = scene_arg;
+    j["scene"] = ccd::escape_invalid_utf8(scene_arg);
     j["nx"] = scene.nx;
     j["ny"] = scene.ny;
     j["step"] = scene.step;
@@ -134,12 +140,8 @@ int run_cloth(std::span<const std::string> args) {
       std::cout << "normal-cone culling ratio (bvh_cones / bvh candidates): "
                 << (candidates[0] > 0 ? candidates[1] / candidates[0] : 1.0) << "\n";
     }
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab cloth: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab cloth: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("cloth", "simulating " + scene_arg);
   }
   return 0;
 }
@@ -149,6 +151,7 @@ int run_cloth(std::span<const std::string> args) {
 extern const Command kClothCommand = {
     "cloth", "simulate a cloth scene (drape, twist, pile or a ccdlab-cloth/1 file); write its frames or its CCD queries",
     "usage: ccdlab cloth drape|twist|pile|SCENE.json -o FRAMES.json [--n N] [--steps K] [--every E] [--cull]\n"
+    "                   [--force]\n"
     "\n"
     "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
     "state (default 10, and the last) as JSON: triangles, obstacles and per frame the time and\n"
@@ -158,7 +161,11 @@ extern const Command kClothCommand = {
     "thickness) and prints their candidates and time per step.\n"
     "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n"
     "\n"
-    "       ccdlab cloth frames drape|twist|pile|SCENE.json -o DIR [--n N] [--steps K]\n"
+    "Every form refuses, before the simulation, a run above 1e9 particle-steps (particles x\n"
+    "steps; `queries` simulates the scene's whole run whatever A:B) or one that would keep\n"
+    "more than 4e9 bytes of states, with the estimate; --force runs it anyway.\n"
+    "\n"
+    "       ccdlab cloth frames drape|twist|pile|SCENE.json -o DIR [--n N] [--steps K] [--force]\n"
     "\n"
     "Simulates the cloth and writes the folder DIR (atomically: a temporary folder renamed):\n"
     "  cloth.json     ccdlab-cloth-motion/1: triangles, edges, springs, obstacles, step, the\n"
@@ -170,7 +177,7 @@ extern const Command kClothCommand = {
     "scene (default 32); --steps overrides the scene's step count.\n"
     "\n"
     "       ccdlab cloth queries drape|twist|pile|SCENE.json --steps A:B -o DIR [--culler NAME]\n"
-    "                            [--hard-below D] [--n N] [--threads T]\n"
+    "                            [--hard-below D] [--n N] [--threads T] [--force]\n"
     "\n"
     "Simulates the cloth and writes, for the step intervals A, A+1, ..., B-1 (interval s runs\n"
     "from state s to state s + 1, each vertex moving linearly; 0 <= A < B <= the scene's\n"

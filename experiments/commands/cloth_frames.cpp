@@ -4,8 +4,11 @@
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
 
+#include "../work_estimate.hpp"
+
 #include <cloth/sim/cloth_simulator.hpp>
 #include <cloth/truth/mesh_truth_file.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/output_directory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
@@ -32,6 +35,18 @@ ccd::cloth::ClothScene load_cloth_scene(const std::string& arg, int n) {
   return is_builtin_cloth_scene(arg) ? ccd::cloth::builtin_cloth_scene(arg, n) : ccd::cloth::read_cloth_scene(arg);
 }
 
+void check_cloth_work(const ccd::cloth::ClothScene& scene, const std::string& arg, double states_kept,
+                      double bytes_per_particle, bool force) {
+  const auto particles = static_cast<double>(scene.particle_count());
+  const std::string size = std::to_string(scene.nx) + " x " + std::to_string(scene.ny) + " particles";
+  const std::string field = is_builtin_cloth_scene(arg) ? "--n" : "steps";
+  check_work({particles * scene.steps, 1e9, "particle-steps", size + ", " + std::to_string(scene.steps) + " steps"},
+             force, arg, field);
+  check_work({particles * states_kept * bytes_per_particle, 4e9, "bytes of memory",
+              size + ", " + work_number(states_kept) + " states kept"},
+             force, arg, field);
+}
+
 int run_cloth_frames(std::span<const std::string> args) {
   auto usage_error = [](const std::string& msg) {
     std::cerr << "ccdlab cloth frames: " << msg << " (see ccdlab cloth --help)\n";
@@ -39,6 +54,7 @@ int run_cloth_frames(std::span<const std::string> args) {
   };
   std::string scene_arg, out_path;
   int n = 32;
+  bool force = false;
   std::optional<int> steps;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -54,6 +70,8 @@ int run_cloth_frames(std::span<const std::string> args) {
       const auto v = has_value ? ccd::parse_integer(args[++i], 1, 1000000) : std::nullopt;
       if (!v) return usage_error("--steps needs an integer in [1, 1000000]");
       steps = static_cast<int>(*v);
+    } else if (a == "--force") {
+      force = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_arg.empty()) {
@@ -67,6 +85,8 @@ int run_cloth_frames(std::span<const std::string> args) {
   try {
     ccd::cloth::ClothScene scene = load_cloth_scene(scene_arg, n);
     if (steps) scene.steps = *steps;
+    // Every state is kept for the digest (24 bytes a particle) while it is written.
+    check_cloth_work(scene, scene_arg, scene.steps + 1.0, 24.0, force);
     ccd::OutputDirectory output(out_path, "cloth.json");
     const auto start = std::chrono::steady_clock::now();
     ccd::cloth::ClothSimulator sim(scene);
@@ -93,7 +113,7 @@ int run_cloth_frames(std::span<const std::string> args) {
     const ccd::cloth::ClothMesh& mesh = sim.mesh();
     nlohmann::json j;
     j["format"] = "ccdlab-cloth-motion/1";
-    j["scene"] = scene_arg;
+    j["scene"] = ccd::escape_invalid_utf8(scene_arg);
     j["nx"] = scene.nx;
     j["ny"] = scene.ny;
     j["particles"] = scene.particle_count();
@@ -128,12 +148,8 @@ int run_cloth_frames(std::span<const std::string> args) {
     std::cout << "particles: " << scene.particle_count() << ", triangles: " << mesh.triangles.size()
               << ", springs: " << mesh.springs.size() << ", states: " << frames.size() << "\n"
               << "written to " << out_path << " in " << seconds << " s\n";
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab cloth frames: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab cloth frames: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("cloth frames", "simulating " + scene_arg);
   }
   return 0;
 }

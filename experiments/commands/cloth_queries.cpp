@@ -9,6 +9,7 @@
 #include <cloth/io/query_file.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
 #include <cloth/truth/mesh_truth_file.hpp>
+#include <ccd/io/utf8_text.hpp>
 #include <ccd/io/output_directory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
@@ -59,6 +60,7 @@ int run_cloth_queries(std::span<const std::string> args) {
   std::string scene_arg, out_path, culler_name = "bvh_cones", steps_text;
   int n = 32;
   unsigned threads = 1;
+  bool force = false;
   std::optional<double> hard_below;
   std::uint64_t first = 0, end = 0;
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -97,6 +99,8 @@ int run_cloth_queries(std::span<const std::string> args) {
       const auto v = has_value ? ccd::parse_integer(args[++i], 1, 1024) : std::nullopt;
       if (!v) return usage_error("--threads needs an integer in [1, 1024]");
       threads = static_cast<unsigned>(*v);
+    } else if (a == "--force") {
+      force = true;
     } else if (a.size() > 1 && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_arg.empty()) {
@@ -116,6 +120,8 @@ int run_cloth_queries(std::span<const std::string> args) {
     if (end > static_cast<std::uint64_t>(scene.steps))
       return usage_error("--steps '" + steps_text + "': B must be <= the scene's " + std::to_string(scene.steps) +
                          " steps");
+    // The whole run is simulated and kept (24 bytes a particle and state), whatever A:B.
+    check_cloth_work(scene, scene_arg, scene.steps + 1.0, 24.0, force);
     ccd::OutputDirectory output(out_path, "index.json");
     const auto start = std::chrono::steady_clock::now();
     const std::vector<std::vector<ccd::Vec3>> frames = ccd::cloth::simulate_cloth(scene);
@@ -131,7 +137,7 @@ int run_cloth_queries(std::span<const std::string> args) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     nlohmann::json j;
     j["format"] = "ccdlab-cloth-queries/1";
-    j["scene"] = scene_arg;
+    j["scene"] = ccd::escape_invalid_utf8(scene_arg);
     j["digest"] = ccd::cloth::motion_digest(mesh, frames, scene.thickness);
     j["culler"] = culler->name;
     j["culler_separation"] = options.cull_separation;
@@ -149,12 +155,8 @@ int run_cloth_queries(std::span<const std::string> args) {
               << "vertex-face: " << j["vf"]["queries"] << " queries, " << j["vf"]["hits"] << " hits\n"
               << "edge-edge: " << j["ee"]["queries"] << " queries, " << j["ee"]["hits"] << " hits\n"
               << "written to " << out_path << " in " << seconds << " s (simulation " << simulated << " s)\n";
-  } catch (const ccd::InputError& e) {
-    std::cerr << "ccdlab cloth queries: " << e.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::exception& e) {
-    std::cerr << "ccdlab cloth queries: " << e.what() << "\n";
-    return 1;
+  } catch (...) {
+    return command_failed("cloth queries", "simulating " + scene_arg);
   }
   return 0;
 }

@@ -18,4 +18,11 @@ ccd::cloth::ClothScene load_cloth_scene(const std::string& arg, int n);
 /// True when `arg` names a built-in scene.
 bool is_builtin_cloth_scene(const std::string& arg);
 
+/// Refuses, before the simulation, a cloth run above 1e9 particle-steps (particles x
+/// steps) or one that keeps more than 4e9 bytes (`states_kept` states of the mesh at
+/// `bytes_per_particle` bytes each) unless `force`: throws ccd::InputError naming `arg`
+/// (experiments/work_estimate.hpp).
+void check_cloth_work(const ccd::cloth::ClothScene& scene, const std::string& arg, double states_kept,
+                      double bytes_per_particle, bool force);
+
 }  // namespace ccdlab

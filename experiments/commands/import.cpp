@@ -3,6 +3,8 @@
 // (ccd/scene/recorded_frames.hpp, docs/import.md).
 #include "command.hpp"
 
+#include "../work_estimate.hpp"
+
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/scene/input_error.hpp>
@@ -23,7 +25,7 @@ namespace ccdlab {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json]\n"
+    "usage: ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json] [--force]\n"
     "\n"
     "Turns recorded frames (from any simulator) into a scene: between two frames of a body\n"
     "its centre moves linearly, i.e. its velocity changes at every frame, and a shaped body\n"
@@ -42,9 +44,14 @@ constexpr const char* kUsage =
     "  --radius R           radius of bodies whose rows give no radius and no shape\n"
     "  --shapes FILE.json   named shapes: a JSON array of shape objects as in a scene's\n"
     "                       \"shapes\" (docs/formats.md), or a scene file whose shapes are used\n"
+    "  --force              read a FRAMES.csv larger than 2e9 bytes (refused before the work\n"
+    "                       otherwise; it must be a regular file, not a folder or a device)\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written);\n"
     "a bad row is named by its line and column (frames.csv: line 7: radius: must be > 0).\n";
+
+// A frames file above this many bytes (tens of millions of rows) is refused without --force.
+constexpr double kMaxFramesFileBytes = 2e9;
 
 int usage_error(const std::string& what) {
   std::cerr << "ccdlab import: " << what << " (see ccdlab import --help)\n";
@@ -53,11 +60,14 @@ int usage_error(const std::string& what) {
 
 int run_import(std::span<const std::string> args) {
   std::string csv_path, out_path, shapes_path, radius_text;
+  bool force = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output" || a == "--radius" || a == "--shapes") {
       if (i + 1 >= args.size()) return usage_error("missing value after " + a);
       (a == "--radius" ? radius_text : a == "--shapes" ? shapes_path : out_path) = args[++i];
+    } else if (a == "--force") {
+      force = true;
     } else if (!a.empty() && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (csv_path.empty()) {
@@ -86,11 +96,14 @@ int run_import(std::span<const std::string> args) {
       if (j.is_array()) {
         options.shapes = j;
       } else if (j.is_object() && j.contains("shapes")) {
+        if (!j["shapes"].is_array())
+          throw ccd::InputError(shapes_path, "shapes", "must be an array of shape objects (docs/formats.md)");
         options.shapes = j["shapes"];
       } else {
         throw ccd::InputError(shapes_path, "", "must be an array of shapes or a scene with \"shapes\"");
       }
     }
+    check_input_file(csv_path, kMaxFramesFileBytes, force);  // a regular file, not /dev/zero or a folder
     std::ifstream in(csv_path, std::ios::binary);
     if (!in) throw ccd::InputError(csv_path, "", "cannot be opened");
     const ccd::FrameImport imported = ccd::import_frames(in, csv_path, options);
@@ -102,7 +115,7 @@ int run_import(std::span<const std::string> args) {
         << changes << " velocity changes, horizon " << imported.scene.horizon << " s (scene time 0 = t "
         << imported.time_origin << " of the file) -> " << out_path << "\n";
   } catch (...) {
-    return command_failed("import");
+    return command_failed("import", "importing " + csv_path);
   }
   return 0;
 }

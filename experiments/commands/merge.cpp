@@ -10,6 +10,8 @@
 
 #include <iostream>
 #include <new>
+#include <optional>
+#include <string_view>
 
 namespace ccdlab {
 namespace {
@@ -36,13 +38,24 @@ int run_merge(std::span<const std::string> args) {
     return kExitBadInput;
   }
   try {
+    // The results and their summary side-file: both checked against every shard now, and
+    // written as one after the merge (neither is left without the other).
     ccd::OutputFile output(out, inputs);
+    std::optional<ccd::OutputFile> summary;
+    if (out != "-") summary.emplace(summary_path(out), inputs);
     std::vector<ResultsShard> shards;
     for (const std::string& f : inputs) shards.push_back({f, ccd::read_json_file(f)});
     const nlohmann::json merged = merge_results(shards);
-    output.commit(merged.dump(1) + "\n");
+    const std::string text = merged.dump(1) + "\n";
+    if (summary) {
+      const std::string markdown = summary_markdown(merged);
+      ccd::OutputFile* files[] = {&output, &*summary};
+      const std::string_view texts[] = {text, markdown};
+      ccd::commit_together(files, texts);
+    } else {
+      output.commit(text);
+    }
     (out == "-" ? std::cerr : std::cout) << "\n" << summary_text(merged) << "\n";
-    if (out != "-") ccd::write_file_atomically(summary_path(out), summary_markdown(merged));
   } catch (...) {
     return command_failed("merge", "reading " + std::to_string(inputs.size()) + " shard files");
   }

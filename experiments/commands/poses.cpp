@@ -3,6 +3,8 @@
 // trajectories, orientations from the prescribed or free spin), as CSV.
 #include "command.hpp"
 
+#include "../work_estimate.hpp"
+
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/rotation.hpp>
 #include <ccd/motion/trajectory.hpp>
@@ -22,7 +24,7 @@ namespace ccdlab {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ccdlab poses SCENE.json --times A:B:STEP -o POSES.csv\n"
+    "usage: ccdlab poses SCENE.json --times A:B:STEP -o POSES.csv [--force]\n"
     "\n"
     "Writes every body's pose at the times A, A + STEP, A + 2 STEP, ... up to B (each time\n"
     "computed as A + k STEP) from the scene's motion model: the centre from the exact\n"
@@ -34,6 +36,7 @@ constexpr const char* kUsage =
     "then body; numbers with 17 significant digits.\n"
     "\n"
     "  --times A:B:STEP  0 <= A <= B <= horizon, STEP > 0, at most 10000000 rows in all\n"
+    "                    unless --force (refused before the work with the estimate)\n"
     "  -o POSES.csv      the output (written atomically; '-' = stdout)\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
@@ -55,11 +58,14 @@ std::optional<double> parse_number(const std::string& s) {
 
 int run_poses(std::span<const std::string> args) {
   std::string scene_path, out_path, times;
+  bool force = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output" || a == "--times") {
       if (i + 1 >= args.size()) return usage_error("missing value after " + a);
       (a == "--times" ? times : out_path) = args[++i];
+    } else if (a == "--force") {
+      force = true;
     } else if (!a.empty() && a[0] == '-' && a != "-") {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_path.empty()) {
@@ -87,9 +93,11 @@ int run_poses(std::span<const std::string> args) {
       return usage_error("--times: B must be at most the scene's horizon " + std::to_string(scene.horizon) + ", got '" +
                          times + "'");
     const double count = std::floor((*B - *A) / *step) + 1.0;
-    if (!(count * static_cast<double>(scene.bodies.size()) <= kMaxRows))
-      return usage_error("--times gives " + std::to_string(count) + " times for " +
-                         std::to_string(scene.bodies.size()) + " bodies, more than 10000000 rows");
+    if (!(count <= 0x1p53))  // k STEP exact, k a long long, even with --force
+      return usage_error("--times gives " + work_number(count) + " times, more than 2^53");
+    check_work({count * static_cast<double>(scene.bodies.size()), kMaxRows, "rows",
+                work_number(count) + " times x " + std::to_string(scene.bodies.size()) + " bodies"},
+               force, scene_path, "--times");
     const ccd::Trajectories traj(scene);
     const ccd::Rotations rot(scene);
     std::string text = "body,t,x,y,z,qw,qx,qy,qz\n";
@@ -108,7 +116,7 @@ int run_poses(std::span<const std::string> args) {
     }
     output.commit(text);
   } catch (...) {
-    return command_failed("poses");
+    return command_failed("poses", "writing the poses of " + scene_path);
   }
   return 0;
 }

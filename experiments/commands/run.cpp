@@ -5,9 +5,11 @@
 #include "../run_cloth_experiment.hpp"
 #include "../run_experiment.hpp"
 #include "../summary.hpp"
+#include "../work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
+#include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -20,6 +22,7 @@
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <optional>
 #include <thread>
 #include <unistd.h>
 
@@ -28,11 +31,26 @@ namespace {
 
 std::atomic<bool> g_cancel{false};
 
-extern "C" void on_signal(int) {
-  if (g_cancel.exchange(true)) {  // second Ctrl-C: leave at once
-    ccd::remove_pending_temporary_files();
-    ::_exit(130);
-  }
+// Leaves at once, writing nothing: the temporary files are removed.
+extern "C" void leave_now(int) {
+  constexpr char kLine[] = "ccdlab run: interrupted; no results written\n";
+  ccd::remove_pending_temporary_files();
+  [[maybe_unused]] const auto n = ::write(STDERR_FILENO, kLine, sizeof kLine - 1);
+  ::_exit(130);
+}
+
+// The first SIGINT or SIGTERM asks the jobs to stop at their next step; if they have not
+// within a second (a long truth or narrow-phase computation between two checks), the
+// alarm leaves at once. A second signal leaves at once too.
+extern "C" void on_signal(int sig) {
+  if (g_cancel.exchange(true)) leave_now(sig);
+  ::alarm(1);
+}
+
+void install_cancel_handlers() {
+  std::signal(SIGALRM, leave_now);
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
 }
 
 // A flag's integer in [1, 4096] (ccd/util/integer_text.hpp).
@@ -40,6 +58,17 @@ bool parse_int(const std::string& s, int& out) {
   const auto v = ccd::parse_integer(s, 1, 4096);
   if (v) out = static_cast<int>(*v);
   return v.has_value();
+}
+
+// The results and their summary side-file, written as one (neither is left without the other).
+void commit_with_summary(ccd::OutputFile& output, std::optional<ccd::OutputFile>& summary,
+                         const nlohmann::json& results) {
+  const std::string text = results.dump(1) + "\n";
+  if (!summary) return output.commit(text);
+  const std::string markdown = summary_markdown(results);
+  ccd::OutputFile* files[] = {&output, &*summary};
+  const std::string_view texts[] = {text, markdown};
+  ccd::commit_together(files, texts);
 }
 
 // A cloth experiment (ccdlab-cloth-experiment/1): simulate, exact mesh truth (cached in
@@ -53,25 +82,22 @@ int run_cloth(const std::string& experiment_path, std::string out_path, int thre
     truth_cache = (std::filesystem::path(out_path).parent_path() / "cloth-truth").string();
   const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path};
   ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
+  std::optional<ccd::OutputFile> summary;  // the side-file, checked now and written with the results
+  if (out_path != "-") summary.emplace(summary_path(out_path), inputs);
   ClothRunOptions options;
   options.threads = threads;
   options.quiet = quiet;
   options.truth_cache = truth_cache;
   options.cancel = &g_cancel;
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  install_cancel_handlers();
   const nlohmann::json results = run_cloth_experiment(e, scene, options);
   if (results.is_null()) {
     std::cerr << "ccdlab run: interrupted; no results written\n";
     return 130;
   }
-  output.commit(results.dump(1) + "\n");
+  commit_with_summary(output, summary, results);
   (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
-  if (out_path != "-") {
-    const std::string summary_file = summary_path(out_path);
-    ccd::write_file_atomically(summary_file, summary_markdown(results));
-    std::cout << "results: " << out_path << "\nsummary: " << summary_file << "\n";
-  }
+  if (summary) std::cout << "results: " << out_path << "\nsummary: " << summary->path() << "\n";
   return 0;
 }
 
@@ -178,6 +204,20 @@ int run_run(std::span<const std::string> args) {
                                 " bodies, up to " + number(most_steps) + " steps per job at dt = " +
                                 number(e.dt.back()) + "), above the limit " + number(kMaxWorkWithoutForce) +
                                 " without --force");
+    // Shaped bodies: the certified truth (unless read from --truth) and the rigid narrow
+    // phase, which tests at most a window's candidate pairs per step.
+    if (scene.has_non_spheres()) try {
+      const ccd::Trajectories traj(scene);
+      const double steps = experiment_work(e, 1, scene.horizon, options.shard.index, options.shard.count);
+      const double pair_work = certified_pair_work(ccd::RigidMotion(scene, traj)) *
+                               ((truth_path.empty() ? 1.0 : 0.0) + steps / static_cast<double>(kEstimateWindows));
+      check_work({pair_work, kMaxPairWorkWithoutForce, "certified pair tests",
+                  std::to_string(scene.bodies.size()) + " bodies with shapes, " + number(steps) +
+                      " steps in all; candidate pairs x hull sizes x turns"},
+                 force, experiment_path, "scene");
+    } catch (const ccd::TooManyPieces&) {
+      // reported below by the run itself, naming the body
+    }
 
     if (out_path.empty()) {
       out_path = "results/" + e.name +
@@ -189,13 +229,14 @@ int run_run(std::span<const std::string> args) {
     const std::string inputs[] = {experiment_path, e.scene_path.empty() ? std::string("-") : e.scene_path,
                                   truth_path.empty() ? std::string("-") : truth_path};
     ccd::OutputFile output(out_path, inputs, /*create_folder=*/true);
+    std::optional<ccd::OutputFile> summary;  // the side-file, checked now and written with the results
+    if (out_path != "-") summary.emplace(summary_path(out_path), inputs);
     if (!options.quiet)
       std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
                 << number(most_steps) << " steps per job)\n";
 
     options.cancel = &g_cancel;
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
+    install_cancel_handlers();
     doing = "running " + std::to_string(e.methods.size() * e.dt.size()) + " jobs over " +
             std::to_string(scene.bodies.size()) + " bodies";
     nlohmann::json results;
@@ -213,15 +254,11 @@ int run_run(std::span<const std::string> args) {
       return 130;
     }
     doing = "writing " + out_path;
-    output.commit(results.dump(1) + "\n");
     // The answer in one table: on the terminal (stderr when the results go to stdout) and
-    // beside the results as Markdown.
+    // beside the results as Markdown, written together with them.
+    commit_with_summary(output, summary, results);
     (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
-    if (out_path != "-") {
-      summary_file = summary_path(out_path);
-      doing = "writing " + summary_file;
-      ccd::write_file_atomically(summary_file, summary_markdown(results));
-    }
+    if (summary) summary_file = summary->path();
     if (!options.quiet) {
       std::size_t flagged = 0;
       for (const auto& r : results["records"]) flagged += !r["self_check"]["ok"].get<bool>();

@@ -3,6 +3,7 @@
 #include "command.hpp"
 
 #include "../progress.hpp"
+#include "../work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
@@ -28,7 +29,7 @@ namespace ccdlab {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet]\n"
+    "usage: ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet] [--force]\n"
     "\n"
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md), and,\n"
@@ -42,12 +43,23 @@ constexpr const char* kUsage =
     "  --windows N   time windows of the space-time broad phase, at most 1000000 (default:\n"
     "                automatic)\n"
     "  --quiet       print no summary and no progress\n"
+    "  --force       compute a scene with shapes whose estimated work (certified pair tests:\n"
+    "                candidate pairs x hull sizes x turns, docs/formats.md) is above 1e9; without\n"
+    "                it such a scene is refused before the work with the estimate\n"
     "\n"
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
     "2 bad input or usage (no file written).\n";
 
 // More windows than this cost more in box work and memory than they can save.
 constexpr unsigned long kMaxWindows = 1000000;
+
+// A scene with shapes: the certified truth's work, refused past the limit unless forced.
+void check_truth_work(const ccd::Scene& scene, const ccd::Trajectories& traj, bool force, const std::string& file) {
+  const double work = certified_pair_work(ccd::RigidMotion(scene, traj));
+  check_work({work, kMaxPairWorkWithoutForce, "certified pair tests",
+              std::to_string(scene.bodies.size()) + " bodies with shapes, candidate pairs x hull sizes x turns"},
+             force, file, "bodies");
+}
 
 int usage_error(const std::string& what) {
   std::cerr << "ccdlab truth: " << what << " (see ccdlab truth --help)\n";
@@ -56,7 +68,7 @@ int usage_error(const std::string& what) {
 
 int run_truth(std::span<const std::string> args) {
   std::string scene_path, out_path;
-  bool quiet = false;
+  bool quiet = false, force = false;
   ccd::TruthOptions options;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -76,6 +88,8 @@ int run_truth(std::span<const std::string> args) {
       }
     } else if (a == "--quiet" || a == "-q") {
       quiet = true;
+    } else if (a == "--force") {
+      force = true;
     } else if (!a.empty() && a[0] == '-' && a != "-") {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_path.empty()) {
@@ -104,6 +118,7 @@ int run_truth(std::span<const std::string> args) {
                                   "a body bouncing ever faster or too fast for its box)");
       }
     }();
+    if (scene.has_non_spheres()) check_truth_work(scene, traj, force, scene_path);
     const auto built = std::chrono::steady_clock::now();
     doing = "computing the ground truth of " + std::to_string(scene.bodies.size()) + " bodies" +
             (options.windows ? " in " + std::to_string(options.windows) + " windows" : std::string());

@@ -24,7 +24,7 @@ namespace ccdlab {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o VIEW.html\n"
+    "usage: ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o VIEW.html [--force]\n"
     "\n"
     "Writes one self-contained HTML page (three.js inlined; open it from disk, no server and no\n"
     "network needed) that plays the scene: play, pause, scrub time; spheres and rigid shapes;\n"
@@ -38,6 +38,9 @@ constexpr const char* kUsage =
     "                        missed contacts the page shows)\n"
     "  --truth TRUTH.json    the scene's ground truth (ccdlab truth -o): its contacts are drawn\n"
     "  -o VIEW.html          the page (written atomically; checked before the work)\n"
+    "  --force               build a page of more than 5e6 entries (trajectory pieces and\n"
+    "                        sampled poses of free spins, about 150 bytes each); without it\n"
+    "                        such a scene is refused before the work with the estimate\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
 
@@ -48,6 +51,7 @@ int usage_error(const std::string& what) {
 
 int run_view(std::span<const std::string> args) {
   std::string scene_path, results_path, truth_path, out_path;
+  bool force = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     if (a == "-o" || a == "--output" || a == "--results" || a == "--truth") {
@@ -56,6 +60,8 @@ int run_view(std::span<const std::string> args) {
       if (!slot.empty()) return usage_error(a + " given twice");
       slot = args[++i];
       if (slot.empty()) return usage_error(a + " needs a file name");
+    } else if (a == "--force") {
+      force = true;
     } else if (!a.empty() && a[0] == '-') {
       return usage_error("unknown option '" + a + "'");
     } else if (scene_path.empty()) {
@@ -88,6 +94,7 @@ int run_view(std::span<const std::string> args) {
       const ccd::Scene scene = binary ? ccd::load_scene(scene_path) : ccd::scene_from_json(scene_json, scene_path);
       ViewInputs in;
       in.scene_file = scene_path;
+      in.force = force;
       if (!results_path.empty()) {
         in.results_file = results_path;
         in.results = ccd::read_json_file(results_path);
@@ -106,7 +113,7 @@ int run_view(std::span<const std::string> args) {
     output.commit(view_page(data));
     if (!output.is_stdout()) std::cout << "written      " << out_path << "\n";
   } catch (...) {
-    return command_failed("view");
+    return command_failed("view", "building the page of " + scene_path);
   }
   return 0;
 }
