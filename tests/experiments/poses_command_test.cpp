@@ -86,7 +86,7 @@ TEST_CASE("ccdlab poses refuses bad --times with exit 2 and writes nothing", "[c
                           Case{"1:0.5:0.1", "--times: need 0 <= A <= B, got '1:0.5:0.1'"},
                           Case{"-1:1:0.1", "--times: need 0 <= A <= B, got '-1:1:0.1'"},
                           Case{"0:3:0.5", "--times: B must be at most the scene's horizon 2.000000, got '0:3:0.5'"},
-                          Case{"0:2:1e-9", "more than 10000000 rows"});
+                          Case{"0:2:1e-9", "needs 6e+09 rows (2e+09 times x 3 bodies), above the limit 1e+07 without --force"});
   std::string err;
   INFO(c.times);
   CHECK(run_ccdlab("poses " + dir / "scene.json" + " --times " + c.times + " -o " + dir / "poses.csv", dir, nullptr,
