@@ -92,6 +92,7 @@ int run_cloth(const std::string& experiment_path, std::string out_path, int thre
   install_cancel_handlers();
   const nlohmann::json results = run_cloth_experiment(e, scene, options);
   if (results.is_null()) {
+    ::alarm(0);  // stopped in time: the message once
     std::cerr << "ccdlab run: interrupted; no results written\n";
     return 130;
   }
@@ -250,6 +251,7 @@ int run_run(std::span<const std::string> args) {
                                 "a body bouncing ever faster or too fast for its box)");
     }
     if (results.is_null()) {
+      ::alarm(0);  // stopped in time: the message once
       std::cerr << "ccdlab run: interrupted; no results written\n";
       return 130;
     }
@@ -290,7 +292,8 @@ extern const Command kRunCommand = {
     "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
     "                     checked before the run (a regular file, not an input, in a folder\n"
     "                     that takes a file), written atomically, never partially (Ctrl-C\n"
-    "                     leaves no file)\n"
+    "                     leaves no file); RESULTS.summary.md is checked with it and written\n"
+    "                     with it (neither is left without the other)\n"
     "  --threads N        worker threads over (method, dt) jobs and for the ground truth\n"
     "                     (default: all cores); counts do not depend on N\n"
     "  --shard K/N        run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
@@ -301,7 +304,9 @@ extern const Command kRunCommand = {
     "                     horizon and body indices\n"
     "  -q, --quiet        no progress on stderr\n"
     "  --force            run even when the work estimate (bodies x steps, summed over the\n"
-    "                     jobs) is above 1e11 body-steps\n"
+    "                     jobs) is above 1e11 body-steps or, with shaped bodies, the certified\n"
+    "                     pair tests (candidate pairs x hull sizes x turns, of the truth and\n"
+    "                     of the narrow phase) are above 1e9 (docs/formats.md)\n"
     "  --list-missed      every record lists the contact events it missed (missed_events:\n"
     "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
     "  --truth-cache DIR  cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
@@ -310,6 +315,8 @@ extern const Command kRunCommand = {
     "\n"
     "A cloth experiment runs every culler in the discrete and continuous modes at every\n"
     "check interval k against the exact mesh truth (docs/experiments.md#cloth-experiments).\n"
+    "\n"
+    "Ctrl-C or SIGTERM stops the run within a second, writing nothing.\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",
     run_run};

@@ -9,6 +9,9 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <csignal>
+#include <string_view>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -116,4 +119,51 @@ TEST_CASE("remove_pending_temporary_files removes what a signal would leave", "[
   CHECK(dir.files() == 1);
   ccd::remove_pending_temporary_files();  // what the signal handlers call
   CHECK(dir.files() == 0);
+}
+
+TEST_CASE("commit_together: when one output cannot be written, none appears", "[io][output]") {
+  const Folder dir;
+  const fs::path a = dir.path / "r.json", b = dir.path / "r.summary.md";
+  std::ofstream(a) << "old results";
+  std::ofstream(b) << "old summary";
+  SECTION("both written") {
+    ccd::OutputFile fa(a.string()), fb(b.string());
+    ccd::OutputFile* files[] = {&fa, &fb};
+    const std::string_view texts[] = {"new results", "new summary"};
+    ccd::commit_together(files, texts);
+    CHECK(slurp(a) == "new results");
+    CHECK(slurp(b) == "new summary");
+  }
+  SECTION("the second one fails (a file size limit stands in for a full disk)") {
+    ccd::OutputFile fa(a.string()), fb(b.string());
+    // Writes past 1000 bytes fail with EFBIG (SIGXFSZ ignored meanwhile).
+    struct rlimit saved {};
+    REQUIRE(::getrlimit(RLIMIT_FSIZE, &saved) == 0);
+    const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+    struct rlimit small = saved;
+    small.rlim_cur = 1000;
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &small) == 0);
+    ccd::OutputFile* files[] = {&fa, &fb};
+    const std::string big(5000, 'x');
+    const std::string_view texts[] = {"new results", big};
+    CHECK_THROWS_WITH(ccd::commit_together(files, texts), Catch::Matchers::Contains("r.summary.md: cannot write"));
+    ::setrlimit(RLIMIT_FSIZE, &saved);
+    std::signal(SIGXFSZ, previous);
+    CHECK(slurp(a) == "old results");
+    CHECK(slurp(b) == "old summary");
+  }
+  CHECK(dir.files() == 2);  // no temporary file left
+}
+
+TEST_CASE("remove_pending_temporary_files removes a registered temporary folder and its files", "[io][output]") {
+  const Folder dir;
+  const fs::path folder = dir.path / "DIR.tmp.1";
+  const int slot = ccd::register_temporary_folder(folder.string());
+  REQUIRE(slot >= 0);
+  fs::create_directory(folder);
+  std::ofstream(folder / "a.csv") << "x";
+  ccd::register_temporary_folder_file(slot, (folder / "a.csv").string());
+  ccd::remove_pending_temporary_files();
+  CHECK_FALSE(fs::exists(folder));
+  ccd::release_temporary_folder(slot);
 }
