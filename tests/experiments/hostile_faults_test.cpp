@@ -29,7 +29,7 @@ struct Run {
   std::string err;
 };
 
-Run ccdlab(const Folder& dir, const std::string& args) {
+Run cli(const Folder& dir, const std::string& args) {
   Run r{};
   r.status = ccdlab::test::run_ccdlab(args, dir, nullptr, &r.err);
   return r;
@@ -151,8 +151,8 @@ TEST_CASE("a full disk and a read-only folder: one line, the old output kept, no
           "[hostile][cli][faults]") {
   Folder dir;
   const Inputs in(dir);
-  REQUIRE(ccdlab(dir, "run " + in.experiment + " --quiet -o " + in.shard).status == 0);
-  REQUIRE(ccdlab(dir, "ccd --write-hard --kind vf -o " + in.queries).status == 0);
+  REQUIRE(cli(dir, "run " + in.experiment + " --quiet -o " + in.shard).status == 0);
+  REQUIRE(cli(dir, "ccd --write-hard --kind vf -o " + in.queries).status == 0);
   const SmallDisk disk(dir.path / "disk", 64);
   if (!disk.mounted()) {
     WARN("skipped: cannot mount a tmpfs here (needs root)");
@@ -164,7 +164,7 @@ TEST_CASE("a full disk and a read-only folder: one line, the old output kept, no
     disk.fill();
     for (const Writer& w : writers(in)) {
       INFO(w.args);
-      const Run r = ccdlab(dir, with_output(w.args, (root / w.name).string()));
+      const Run r = cli(dir, with_output(w.args, (root / w.name).string()));
       CHECK(r.status == 1);
       CHECK((!r.err.empty() && r.err.find('\n') == r.err.size() - 1));
       CHECK(old_intact(w, root / w.name));
@@ -177,7 +177,7 @@ TEST_CASE("a full disk and a read-only folder: one line, the old output kept, no
     REQUIRE(disk.make_read_only());
     for (const Writer& w : writers(in)) {
       INFO(w.args);
-      const Run r = ccdlab(dir, with_output(w.args, (root / w.name).string()));
+      const Run r = cli(dir, with_output(w.args, (root / w.name).string()));
       CHECK(r.status == 2);
       CHECK((!r.err.empty() && r.err.find('\n') == r.err.size() - 1));
       CHECK(old_intact(w, root / w.name));
@@ -189,14 +189,14 @@ TEST_CASE("a full disk and a read-only folder: one line, the old output kept, no
 TEST_CASE("SIGKILL at random points leaves the old output or the whole new one", "[hostile][cli][faults]") {
   Folder dir;
   const Inputs in(dir);
-  REQUIRE(ccdlab(dir, "run " + in.experiment + " --quiet -o " + in.shard).status == 0);
-  REQUIRE(ccdlab(dir, "ccd --write-hard --kind vf -o " + in.queries).status == 0);
+  REQUIRE(cli(dir, "run " + in.experiment + " --quiet -o " + in.shard).status == 0);
+  REQUIRE(cli(dir, "ccd --write-hard --kind vf -o " + in.queries).status == 0);
   std::mt19937_64 rng(36);
   for (const Writer& w : writers(in)) {
     const fs::path out = dir.path / "out" / w.name;
     fs::create_directories(out.parent_path());
     // The whole new output, for comparison (timings differ run to run: JSON is parsed).
-    REQUIRE(ccdlab(dir, with_output(w.args, (dir.path / ("new-" + w.name)).string())).status == 0);
+    REQUIRE(cli(dir, with_output(w.args, (dir.path / ("new-" + w.name)).string())).status == 0);
     const fs::path whole = dir.path / ("new-" + w.name);
     auto is_whole_new = [&] {
       const fs::path f = w.folder ? out / w.marker : out;
@@ -212,7 +212,7 @@ TEST_CASE("SIGKILL at random points leaves the old output or the whole new one",
       const int delay_us = std::uniform_int_distribution<int>(0, 60000)(rng);
       const std::string cmd = "sh -c '" + std::string(CCDLAB_BINARY) + " " + with_output(w.args, out.string()) +
                               " >/dev/null 2>&1 & p=$!; " +
-                              "sleep " + std::to_string(delay_us / 1e6) + "; kill -KILL $p 2>/dev/null; wait $p'";
+                              "sleep " + std::to_string(delay_us / 1e6) + "; kill -KILL $p 2>/dev/null; wait $p' 2>/dev/null";
       (void)std::system(cmd.c_str());
       INFO(w.args << " killed after " << delay_us << " us");
       CHECK((old_intact(w, out) || is_whole_new()));
@@ -228,7 +228,7 @@ TEST_CASE("two runs writing one output at once leave one whole file", "[hostile]
   for (const Writer& w : {Writer{"t.json", "truth " + in.scene + " -o OUT", false, ""},
                           Writer{"F", "cloth frames " + in.cloth + " -o OUT", true, "cloth.json"}}) {
     const fs::path out = dir.path / w.name;
-    REQUIRE(ccdlab(dir, with_output(w.args, (dir.path / ("one-" + w.name)).string())).status == 0);
+    REQUIRE(cli(dir, with_output(w.args, (dir.path / ("one-" + w.name)).string())).status == 0);
     auto content = [&](const fs::path& p) { return slurp((w.folder ? p / w.marker : p).string()); };
     const std::string expected = content(dir.path / ("one-" + w.name));
     const std::string one = std::string(CCDLAB_BINARY) + " " + with_output(w.args, out.string()) + " >/dev/null 2>&1";

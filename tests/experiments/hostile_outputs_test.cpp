@@ -30,7 +30,7 @@ struct Run {
 };
 
 // `ccdlab ARGS`, after the shell commands `prefix` (e.g. a ulimit).
-Run ccdlab(const Folder& dir, const std::string& args, const std::string& prefix = "") {
+Run cli(const Folder& dir, const std::string& args, const std::string& prefix = "") {
   Run r{};
   if (prefix.empty()) {
     r.status = ccdlab::test::run_ccdlab(args, dir, &r.out, &r.err);
@@ -104,7 +104,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
                        {"angular_velocity_changes", changes}}}}};
     const std::string scene = write(dir, "spin.json", s.dump());
     const auto start = std::chrono::steady_clock::now();
-    const Run r = ccdlab(dir, "view " + scene + " -o " + (dir / "v.html"));
+    const Run r = cli(dir, "view " + scene + " -o " + (dir / "v.html"));
     CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(20));
     CHECK(r.status == 2);
     CHECK(one_line(r.err));
@@ -113,7 +113,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
     CHECK_FALSE(fs::exists(dir / "v.html"));
 #ifndef CCDLAB_SANITIZED  // the sanitizers' allocator aborts instead of throwing std::bad_alloc
     // Forced under a 1 GB address space: one line, exit 1, not an abort.
-    const Run f = ccdlab(dir, "view " + scene + " --force -o " + (dir / "v.html"), "ulimit -v 1000000; ");
+    const Run f = cli(dir, "view " + scene + " --force -o " + (dir / "v.html"), "ulimit -v 1000000; ");
     CHECK(f.status == 1);
     CHECK(f.err == "ccdlab view: out of memory building the page of " + scene + "\n");
     CHECK_FALSE(fs::exists(dir / "v.html"));
@@ -121,7 +121,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
   }
   SECTION("truth and run of 1,000 spinning boxes piled at one point") {
     const std::string scene = write(dir, "pile.json", spinning_pile(1000).dump());
-    Run r = ccdlab(dir, "truth " + scene + " -o " + out);
+    Run r = cli(dir, "truth " + scene + " -o " + out);
     CHECK(r.status == 2);
     CHECK(one_line(r.err));
     CHECK(r.err.find("ccdlab truth: " + scene + ": bodies: needs ") == 0);
@@ -129,12 +129,12 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
     CHECK(r.err.find("above the limit 1e+09 without --force") != std::string::npos);
     // aabb/brute on the same pile, the truth given or not.
     const std::string e = write(dir, "e.json", experiment(scene, {"aabb/brute"}).dump());
-    r = ccdlab(dir, "run " + e + " -o " + out);
+    r = cli(dir, "run " + e + " -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err.find("ccdlab run: " + e + ": scene: needs ") == 0);
     CHECK(r.err.find("certified pair tests") != std::string::npos);
     // A small pile passes.
-    r = ccdlab(dir, "truth " + write(dir, "pile3.json", spinning_pile(2).dump()) + " --quiet -o " + out);
+    r = cli(dir, "truth " + write(dir, "pile3.json", spinning_pile(2).dump()) + " --quiet -o " + out);
     CHECK(r.status == 0);
     fs::remove(out);
   }
@@ -151,7 +151,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
                      {{{"shape", "h"}, {"position", {0, 0, 0}}, {"angular_velocity", {0, 0, 5}}},
                       {{"shape", "h"}, {"position", {1.5, 0, 0}}, {"angular_velocity", {5, 0, 0}}}}}};
     const std::string scene = write(dir, "hulls.json", s.dump());
-    const Run r = ccdlab(dir, "truth " + scene + " -o " + out);
+    const Run r = cli(dir, "truth " + scene + " -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err.find("certified pair tests (2 bodies with shapes") != std::string::npos);
   }
@@ -165,7 +165,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
                                    "cloth queries " + scene + " --steps 0:1 -o " + (dir / "Q"),
                                    std::string("cloth drape --n 1000 --steps 1000000 -o ") + out}) {
       INFO(cmd);
-      const Run r = ccdlab(dir, cmd, "ulimit -v 4000000; ");
+      const Run r = cli(dir, cmd, "ulimit -v 4000000; ");
       CHECK(r.status == 2);
       CHECK(one_line(r.err));
       CHECK(r.err.find("needs 1e+12 particle-steps (1000 x 1000 particles, 1000000 steps), above the limit 1e+09 "
@@ -175,20 +175,20 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
     CHECK_FALSE(fs::exists(dir / "Q"));
   }
   SECTION("ccd of /dev/zero and of a folder; import of a folder") {
-    Run r = ccdlab(dir, "ccd /dev/zero --kind vf -o " + out);
+    Run r = cli(dir, "ccd /dev/zero --kind vf -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab ccd: /dev/zero: is not a regular file (a device or a pipe); give a file\n");
-    r = ccdlab(dir, "ccd " + dir.path.string() + " --kind vf");
+    r = cli(dir, "ccd " + dir.path.string() + " --kind vf");
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab ccd: " + dir.path.string() + ": is a folder; give a file\n");
-    r = ccdlab(dir, "import " + dir.path.string() + " --radius 1 -o " + out);
+    r = cli(dir, "import " + dir.path.string() + " --radius 1 -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab import: " + dir.path.string() + ": is a folder; give a file\n");
   }
   SECTION("import --shapes {\"shapes\": 5}") {
     const std::string csv = write(dir, "f.csv", "body,t,x,y,z,shape\n0,0,0,0,0,box:1,1,1\n0,1,1,0,0,box:1,1,1\n");
     const std::string shapes = write(dir, "shapes.json", R"({"shapes": 5})");
-    const Run r = ccdlab(dir, "import " + csv + " --shapes " + shapes + " -o " + out);
+    const Run r = cli(dir, "import " + csv + " --shapes " + shapes + " -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab import: " + shapes + ": shapes: must be an array of shape objects (docs/formats.md)\n");
   }
@@ -202,7 +202,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
       }
     const std::string file = write(dir, "many.csv", csv);
     const auto start = std::chrono::steady_clock::now();
-    const Run r = ccdlab(dir, "import " + file + " -o " + out);
+    const Run r = cli(dir, "import " + file + " -o " + out);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     CHECK(r.status == 0);
     // Quadratic look-ups took minutes; linear ones take about a second (more under sanitizers).
@@ -212,7 +212,7 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
   }
   SECTION("poses past 1e7 rows: refused with the estimate, --force writes them") {
     const std::string scene = write(dir, "s.json", two_spheres().dump());
-    Run r = ccdlab(dir, "poses " + scene + " --times 0:1:1e-7 -o " + out);
+    Run r = cli(dir, "poses " + scene + " --times 0:1:1e-7 -o " + out);
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab poses: " + scene +
                        ": --times: needs 2e+07 rows (1e+07 times x 2 bodies), above the limit 1e+07 without --force\n");
@@ -228,7 +228,7 @@ TEST_CASE("the summary side-file is checked against every input before the work 
   const std::string scene_text = slurp(scene);
   SECTION("run -o r.json where r.summary.md is the scene, the experiment or the --truth file") {
     const std::string e = write(dir, "e.json", experiment("r.summary.md").dump());
-    Run r = ccdlab(dir, "run " + e + " -o " + (dir / "r.json"));
+    Run r = cli(dir, "run " + e + " -o " + (dir / "r.json"));
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab run: " + (dir / "r.summary.md") + ": is an input of this command (" + scene +
                        "); choose another output file\n");
@@ -237,14 +237,14 @@ TEST_CASE("the summary side-file is checked against every input before the work 
     // The experiment itself: e.json's side-file is e.summary.md.
     const std::string s2 = write(dir, "s.json", two_spheres().dump());
     const std::string e2 = write(dir, "x.summary.md", experiment(s2).dump());
-    r = ccdlab(dir, "run " + e2 + " -o " + (dir / "x.json"));
+    r = cli(dir, "run " + e2 + " -o " + (dir / "x.json"));
     CHECK(r.status == 2);
     CHECK(r.err.find("is an input of this command") != std::string::npos);
     CHECK_FALSE(fs::exists(dir / "x.json"));
     // The --truth file.
-    REQUIRE(ccdlab(dir, "truth " + s2 + " -o " + (dir / "t.summary.md")).status == 0);
+    REQUIRE(cli(dir, "truth " + s2 + " -o " + (dir / "t.summary.md")).status == 0);
     const std::string truth_text = slurp(dir / "t.summary.md");
-    r = ccdlab(dir, "run " + write(dir, "e3.json", experiment(s2).dump()) + " --truth " + (dir / "t.summary.md") +
+    r = cli(dir, "run " + write(dir, "e3.json", experiment(s2).dump()) + " --truth " + (dir / "t.summary.md") +
                         " -o " + (dir / "t.json"));
     CHECK(r.status == 2);
     CHECK(r.err.find("is an input of this command") != std::string::npos);
@@ -254,9 +254,9 @@ TEST_CASE("the summary side-file is checked against every input before the work 
   SECTION("merge with a shard named m.summary.md") {
     const std::string s2 = write(dir, "s.json", two_spheres().dump());
     const std::string e = write(dir, "e.json", experiment(s2).dump());
-    REQUIRE(ccdlab(dir, "run " + e + " --quiet -o " + (dir / "m.summary.md")).status == 0);
+    REQUIRE(cli(dir, "run " + e + " --quiet -o " + (dir / "m.summary.md")).status == 0);
     const std::string shard = slurp(dir / "m.summary.md");
-    const Run r = ccdlab(dir, "merge " + (dir / "m.summary.md") + " -o " + (dir / "m.json"));
+    const Run r = cli(dir, "merge " + (dir / "m.summary.md") + " -o " + (dir / "m.json"));
     CHECK(r.status == 2);
     CHECK(r.err.find("is an input of this command") != std::string::npos);
     CHECK(slurp(dir / "m.summary.md") == shard);
@@ -265,7 +265,7 @@ TEST_CASE("the summary side-file is checked against every input before the work 
   SECTION("a folder named like the side-file: refused before the run, no results left behind") {
     const std::string s2 = write(dir, "s.json", two_spheres().dump());
     fs::create_directory(dir / "f.summary.md");
-    const Run r = ccdlab(dir, "run " + write(dir, "e.json", experiment(s2).dump()) + " -o " + (dir / "f.json"));
+    const Run r = cli(dir, "run " + write(dir, "e.json", experiment(s2).dump()) + " -o " + (dir / "f.json"));
     CHECK(r.status == 2);
     CHECK(r.err == "ccdlab run: " + (dir / "f.summary.md") + ": is a folder; the output must be a file\n");
     CHECK_FALSE(fs::exists(dir / "f.json"));
@@ -280,7 +280,7 @@ TEST_CASE("file names that are not UTF-8 are stored escaped", "[hostile][cli][ou
   SECTION("run: an experiment in folder d\\xff/ with its scene beside it") {
     write(dir, "d\xff/t.json", two_spheres().dump());
     const std::string e = write(dir, "d\xff/e.json", experiment("t.json").dump());  // JSON itself is UTF-8
-    const Run r = ccdlab(dir, "run " + e + " --quiet -o " + (dir / "d\xff/r\xff.json"));
+    const Run r = cli(dir, "run " + e + " --quiet -o " + (dir / "d\xff/r\xff.json"));
     REQUIRE(r.status == 0);
     const json results = json::parse(slurp(dir / "d\xff/r\xff.json"));
     CHECK(results["experiment"]["scene"] == dir / "d\\xFF/t.json");
@@ -288,13 +288,13 @@ TEST_CASE("file names that are not UTF-8 are stored escaped", "[hostile][cli][ou
     CHECK(fs::exists(dir / "d\xff/r\xff.summary.md"));
   }
   SECTION("view of t\\xff.json") {
-    const Run r = ccdlab(dir, "view " + scene + " -o " + (dir / "d\xff/v.html"));
+    const Run r = cli(dir, "view " + scene + " -o " + (dir / "d\xff/v.html"));
     REQUIRE(r.status == 0);
     CHECK(slurp(dir / "d\xff/v.html").find("t\\\\xFF.json") != std::string::npos);
   }
   SECTION("ccd of q\\xff.csv") {
-    REQUIRE(ccdlab(dir, "ccd --write-hard --kind vf -o " + (dir / "d\xff/q\xff.csv")).status == 0);
-    const Run r = ccdlab(dir, "ccd " + (dir / "d\xff/q\xff.csv") + " --kind vf -o " + (dir / "c.json"));
+    REQUIRE(cli(dir, "ccd --write-hard --kind vf -o " + (dir / "d\xff/q\xff.csv")).status == 0);
+    const Run r = cli(dir, "ccd " + (dir / "d\xff/q\xff.csv") + " --kind vf -o " + (dir / "c.json"));
     REQUIRE(r.status == 0);
     CHECK(json::parse(slurp(dir / "c.json"))["file"] == dir / "d\\xFF/q\\xFF.csv");
   }
@@ -304,9 +304,9 @@ TEST_CASE("file names that are not UTF-8 are stored escaped", "[hostile][cli][ou
       "particle_mass": 0.1, "springs": {"structural": {"stiffness": 10, "damping": 0},
       "shear": {"stiffness": 1, "damping": 0}, "bend": {"stiffness": 1, "damping": 0}},
       "thickness": 0, "step": 0.01, "steps": 2})");
-    REQUIRE(ccdlab(dir, "cloth " + cloth + " -o " + (dir / "d\xff/f.json")).status == 0);
+    REQUIRE(cli(dir, "cloth " + cloth + " -o " + (dir / "d\xff/f.json")).status == 0);
     CHECK(json::parse(slurp(dir / "d\xff/f.json"))["scene"] == dir / "d\\xFF/c\\xFF.json");
-    REQUIRE(ccdlab(dir, "cloth frames " + cloth + " -o " + (dir / "d\xff/F")).status == 0);
+    REQUIRE(cli(dir, "cloth frames " + cloth + " -o " + (dir / "d\xff/F")).status == 0);
     CHECK(json::parse(slurp(dir / "d\xff/F/cloth.json"))["scene"] == dir / "d\\xFF/c\\xFF.json");
   }
   CHECK(temporaries(dir.path) == 0);
@@ -316,9 +316,9 @@ TEST_CASE("run --truth checks every index of the truth's events against the scen
   Folder dir;
   json s = two_spheres();
   s["format"] = "ccdlab-scene/2";
-  s["scenery"] = {{{"vertices", {{-10, -2, -10}, {10, -2, -10}, {10, -2, 10}}}}};
+  s["scenery"] = {{{"polygon", {{-10, -2, -10}, {10, -2, -10}, {10, -2, 10}}}}};
   const std::string scene = write(dir, "s.json", s.dump());
-  REQUIRE(ccdlab(dir, "truth " + scene + " -o " + (dir / "t.json")).status == 0);
+  REQUIRE(cli(dir, "truth " + scene + " -o " + (dir / "t.json")).status == 0);
   json truth = json::parse(slurp(dir / "t.json"));
   REQUIRE(truth.contains("static_events"));
   const std::string e = write(dir, "e.json", experiment(scene).dump());
@@ -327,7 +327,7 @@ TEST_CASE("run --truth checks every index of the truth's events against the scen
     bad["static_events"] = {{{"body", 0}, {"polygon", 0}, {"enter", 0.25}, {"exit", 0.5}}};
     bad["static_events"][0][field] = 999;
     const std::string file = write(dir, "bad.json", bad.dump());
-    const Run r = ccdlab(dir, "run " + e + " --truth " + file + " -o " + (dir / "r.json"));
+    const Run r = cli(dir, "run " + e + " --truth " + file + " -o " + (dir / "r.json"));
     INFO(field);
     CHECK(r.status == 2);
     CHECK(r.err.find(file + ": static_events[0]." + field + ": " + field + " 999 does not exist") !=
