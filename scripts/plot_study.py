@@ -614,7 +614,7 @@ def load_cloth(path):
     if not res.get("records"):
         fail(f"{path}: records: no records to plot")
     for i, r in enumerate(res["records"]):
-        for k in ("method", "mode", "culler", "k", "missed", "events", "candidates", "false_positives",
+        for k in ("method", "mode", "culler", "k", "dt", "missed", "events", "candidates", "false_positives",
                   "checks", "seconds_per_simulated_second", "conservative"):
             if k not in r:
                 fail(f"{path}: records[{i}].{k}: missing field")
@@ -651,7 +651,8 @@ def cloth(results, outdir, formats):
                 if k in by_k else "" for k in ks) + " |")
             for row, (key, label, scale) in enumerate(rows):
                 ax = axes[row][col]
-                ys = [r["false_positives"] / r["checks"] if key == "fp_per_check" else r[key] for r in rs]
+                ys = [(r["false_positives"] / r["checks"] if r["checks"] else 0.0) if key == "fp_per_check" else r[key]
+                      for r in rs]
                 ax.plot([r["k"] for r in rs], ys, label=m, linewidth=1.3, markersize=4,
                         linestyle="-" if rs[0]["mode"] == "continuous" else "--", **plot.style(i))
         for row, (key, label, scale) in enumerate(rows):
@@ -730,6 +731,24 @@ def thin_obstacles(results, outdir, formats):
     return out, save(fig, outdir, "thin-obstacles-missed", formats)
 
 
+def check_study_inputs(study, paths, results):
+    """What a study reads beyond the records, checked per file (exit 2 naming it)."""
+    for p, res in zip(paths, results):
+        src = source(res)
+        if study == "fit" and (isinstance(src.get("elongation"), bool)
+                               or not isinstance(src.get("elongation"), (int, float))):
+            fail(f"{plot.shown(p)}: scene.source.elongation: missing (the fit study draws generated scenes "
+                 "against their elongation)")
+        if study == "bound-violation":
+            true_max = src.get("max_acceleration", res["scene"].get("max_acceleration"))
+            if isinstance(true_max, bool) or not isinstance(true_max, (int, float)) or not true_max > 0:
+                fail(f"{plot.shown(p)}: scene.max_acceleration: must be > 0 (the bound-violation study divides "
+                     "the bound used by it)")
+            used = res["experiment"].get("acceleration_bound_used")
+            if isinstance(used, bool) or not isinstance(used, (int, float)):
+                fail(f"{plot.shown(p)}: experiment.acceleration_bound_used: missing")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
@@ -759,6 +778,7 @@ def main(argv=None):
             for k in ("steps", "missed", "detected", "broad_seconds", "candidates", "self_check"):
                 if k not in r:
                     fail(f"{p}: records[{i}].{k}: missing field")
+    check_study_inputs(args.study, args.results, results)
     os.makedirs(outdir, exist_ok=True)
     s = args.study
     if s == "tunnelling":
