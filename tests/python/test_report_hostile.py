@@ -65,13 +65,18 @@ def test_all_zero_and_single_record(tmp_path, cli, make):
         assert (out / name).stat().st_size > 0
 
 
+HOSTILE = ("invalid UTF-8", "nesting 100,000 deep", "an experiment that is a list", "the same file twice",
+           "the same file under another name", "the same results twice", "dt = 1e-320 with cost 1e308",
+           "cost 1e308", "NaN", "payloads in names", "a folder", "a missing file")
+
+
 def hostile_cases(tmp_path, good):
-    """(name, the files given, what the error line must hold) for each hostile input."""
+    """{name: (the files given, what the error line must hold)} for each hostile input."""
     good_path = write_json(tmp_path / "good.json", good)
-    cases = []
+    cases = {}
 
     def add(name, files, needle):
-        cases.append((name, [str(f) for f in files], needle))
+        cases[name] = ([str(f) for f in files], needle)
 
     text = json.dumps(good).replace('"crossing"', '"cross-ing"', 1).encode()
     (tmp_path / "utf8.json").write_bytes(text.replace(b"cross-ing", b"cross\xffing"))
@@ -108,15 +113,16 @@ def hostile_cases(tmp_path, good):
     return cases
 
 
-def test_hostile_inputs_exit_2_with_one_line_writing_nothing(tmp_path, cli, crossing):
+@pytest.mark.parametrize("name", HOSTILE)
+def test_hostile_input_exits_2_with_one_line_writing_nothing(tmp_path, cli, crossing, name):
     cases = hostile_cases(tmp_path, crossing)
-    assert len(cases) == 12
-    for name, files, needle in cases:
-        out = tmp_path / "out"
-        run = cli("report", *files, "-o", out, check=False)
-        assert run.returncode == 2, (name, run.stderr)
-        one_line_error(run, needle)
-        assert not out.exists(), name
+    assert sorted(cases) == sorted(HOSTILE)
+    files, needle = cases[name]
+    out = tmp_path / "out"
+    run = cli("report", *files, "-o", out, check=False)
+    assert run.returncode == 2, run.stderr
+    one_line_error(run, needle)
+    assert not out.exists()
     assert not (tmp_path / "PWNED").exists()
 
 
