@@ -60,6 +60,13 @@ def save(fig, outdir, stem, formats):
     return paths
 
 
+def log_y(ax):
+    """A log value axis over the lines `ax` draws; linear with a note when none of their
+    values is > 0 (plot.y_axis): an all-zero series has nothing to show on a log scale."""
+    ys = [float(y) for line in ax.get_lines() for y in line.get_ydata() if y is not None and float(y) == float(y)]
+    plot.y_axis(ax, ys, "log")
+
+
 def legend(ax, **kw):
     ax.legend(fontsize=8, frameon=False, **kw)
 
@@ -196,7 +203,7 @@ def sap_coherence(results, outdir, formats):
             out.append(f"| {n} | {fmt_dt(d)} | {steps} | " + " | ".join(cells) + " |")
     for ax in axes:
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("timestep dt (s)")
         ax.grid(True, which="both", alpha=0.3)
     what = {"sap": "endpoint swaps, 3 axes", "sweep": "start swaps, 1 axis"}
@@ -487,7 +494,7 @@ def scheduling(results, outdir, formats):
             ax.plot([r["dt"] for r in rs], [cpu_cost(r) for r in rs], label=m,
                     linestyle="-" if sched_m else "--", linewidth=1.3, markersize=4, **plot.style(i % 4))
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("dt: step (fixed) or longest window (@earliest), s")
         ax.set_ylabel("CPU seconds per simulated second")
         ax.set_title(f"{name}: {res['truth']['events']} events", fontsize=10)
@@ -539,7 +546,7 @@ def time_against(results, outdir, formats, stem, xkey, xlabel, title):
                 ax.plot([x for x, _ in pts], [per_step(r, "broad_seconds") * 1e3 for _, r in pts], label=m,
                         **plot.style(i))
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel(xlabel)
         ax.set_ylabel("broad-phase ms per step")
         ax.set_title(f"dt = {fmt_dt(d)} s", fontsize=10)
@@ -586,7 +593,7 @@ def fit(results, outdir, formats):
                                     for n in method_order(results))
                        + f" | {', '.join(map(str, disc))} | {', '.join(map(str, cont))} |")
         ax.set_xscale("log", base=2)
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("elongation (largest / smallest half extent)")
         ax.set_ylabel("false positives per step")
         ax.set_title(f"{g}: {rs_g[0]['scene']['bodies']} bodies; dashed: discrete", fontsize=10)
@@ -662,7 +669,7 @@ def cloth(results, outdir, formats):
                 ax.set_yscale("symlog", linthresh=1)
                 ax.set_ylim(bottom=0)
             else:
-                ax.set_yscale("log")
+                log_y(ax)
             ax.set_xlabel("check interval k (integrator steps)")
             ax.set_ylabel(label)
             ax.grid(True, which="both", alpha=0.3)
