@@ -330,7 +330,7 @@ def grazing(results, outdir, formats):
         ax.axhline(t["events"], color="black", linewidth=1)
         ax.axhline(t["tangent_events"], color="gray", linestyle=":", linewidth=1)
         ax.set_xscale("log", base=2 if "dyadic" in name else 10)
-        ax.set_ylim(bottom=0, top=t["events"] * 1.08)
+        ax.set_ylim(bottom=0, top=max(1, t["events"]) * 1.08)  # 1 when the truth has no event
         ax.set_xlabel("timestep dt (s)")
         ax.set_ylabel("events detected")
         ax.set_title(f"{name}: {t['events']} events (black), {t['tangent_events']} tangent (dotted)",

@@ -4,8 +4,10 @@
 # chart must be written as a PNG, exit 0, no traceback; what a study needs beyond the
 # records, when missing, is one line and exit 2.
 import copy
+import importlib
 import json
 import subprocess
+import sys
 
 import pytest
 
@@ -35,6 +37,23 @@ def script(*args):
     return subprocess.run(["/usr/bin/python3", *map(str, args)], capture_output=True, text=True, timeout=300)
 
 
+def in_process(module, args, capsys):
+    """Runs scripts/MODULE.py's main(args) in this interpreter (a second start of Python and
+    matplotlib per chart would make the test slow): (exit status, stdout, stderr)."""
+    sys.path.insert(0, str(SOURCE_DIR / "scripts"))
+    try:
+        main = importlib.import_module(module).main
+    finally:
+        sys.path.pop(0)
+    try:
+        main([str(a) for a in args])
+        status = 0
+    except SystemExit as e:
+        status = e.code
+    out = capsys.readouterr()
+    return subprocess.CompletedProcess(args, status, out.out, out.err)
+
+
 def written_pngs(run):
     paths = [line for line in run.stdout.splitlines() if line.endswith(".png")]
     for p in paths:
@@ -44,8 +63,8 @@ def written_pngs(run):
 
 
 @pytest.mark.parametrize("kind", ["all-zero", "one-record"])
-def test_plot_draws_every_chart(tmp_path, smallest, kind):
-    run = script(PLOT, smallest[kind], "-o", tmp_path / "plots", "--format", "png")
+def test_plot_draws_every_chart(tmp_path, smallest, kind, capsys):
+    run = in_process("plot", [smallest[kind], "-o", tmp_path / "plots", "--format", "png"], capsys)
     assert run.returncode == 0, run.stderr
     assert "Traceback" not in run.stderr
     names = sorted(p.rsplit("/", 1)[1] for p in written_pngs(run))
@@ -54,8 +73,8 @@ def test_plot_draws_every_chart(tmp_path, smallest, kind):
 
 @pytest.mark.parametrize("kind", ["all-zero", "one-record"])
 @pytest.mark.parametrize("study", STUDIES)
-def test_plot_study_draws_every_study(tmp_path, smallest, kind, study):
-    run = script(PLOT_STUDY, study, smallest[kind], "-o", tmp_path / "plots", "--ccdlab", BINARY)
+def test_plot_study_draws_every_study(tmp_path, smallest, kind, study, capsys):
+    run = in_process("plot_study", [study, smallest[kind], "-o", tmp_path / "plots", "--ccdlab", BINARY], capsys)
     assert run.returncode == 0, run.stderr
     assert "Traceback" not in run.stderr
     assert len(written_pngs(run)) >= 1
@@ -68,14 +87,14 @@ def cloth_results(records):
 
 
 @pytest.mark.parametrize("count", [1, 4])
-def test_plot_study_cloth_all_zero(tmp_path, count):
+def test_plot_study_cloth_all_zero(tmp_path, count, capsys):
     # Every count 0, no check run (checks = 0: once a division by zero).
     zero = {"method": "bvh", "mode": "continuous", "culler": "bvh", "k": 1, "missed": 0, "events": 0,
             "candidates": 0, "false_positives": 0, "checks": 0, "seconds_per_simulated_second": 0.0,
             "conservative": True}
     records = [dict(zero, k=2 ** i, dt=0.01 * 2 ** i) for i in range(count)]
     path = write_json(tmp_path / "cloth.json", cloth_results(records))
-    run = script(PLOT_STUDY, "cloth", path, "-o", tmp_path / "plots")
+    run = in_process("plot_study", ["cloth", path, "-o", tmp_path / "plots"], capsys)
     assert run.returncode == 0, run.stderr
     assert len(written_pngs(run)) == 1
 
