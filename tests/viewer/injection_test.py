@@ -11,8 +11,7 @@ payloads set data-injected on the root element), and the payload must be on the 
 text (the viewer's info line names the scene file, the report's heading is the title).
 
 One browser for every page, driven over its DevTools pipe (--remote-debugging-pipe: JSON
-messages on file descriptors 3 and 4, no network, no extra package), so the test takes
-seconds. Usage: injection_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when
+messages on file descriptors 3 and 4, no network, no extra package): one start, not nine. Usage: injection_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when
 no chromium is installed.
 """
 import json
