@@ -58,7 +58,7 @@ void check_document(const nlohmann::json& j, const std::string& where) {
 
 }  // namespace
 
-TEST_CASE("every JSON block in the README and docs parses; scenes and experiments are accepted", "[docs]") {
+TEST_CASE("every JSON block in the README and docs parses, scenes and experiments are accepted", "[docs]") {
   const std::regex block("```json\\n([\\s\\S]*?)```");
   int checked = 0;
   for (const fs::path& file : markdown_files()) {

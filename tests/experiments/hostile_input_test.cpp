@@ -155,7 +155,7 @@ TEST_CASE("magnitudes whose products overflow are rejected with the field and th
   CHECK(dir.temporaries() == 0);
 }
 
-TEST_CASE("a dt the horizon cannot resolve is rejected; past the work limit a run needs --force", "[hostile][cli]") {
+TEST_CASE("a dt the horizon cannot resolve is rejected, past the work limit a run needs --force", "[hostile][cli]") {
   const Scratch dir;
   const std::string out = dir / "out.json";
   const std::string scene = dir.write("s.json", two_bodies());

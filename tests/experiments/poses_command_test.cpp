@@ -95,7 +95,7 @@ TEST_CASE("ccdlab poses refuses bad --times with exit 2 and writes nothing", "[c
   CHECK_FALSE(std::filesystem::exists(dir / "poses.csv"));
 }
 
-TEST_CASE("ccdlab poses: a bad scene names its field; usage errors", "[cli][poses]") {
+TEST_CASE("ccdlab poses: a bad scene names its field, usage errors", "[cli][poses]") {
   Folder dir;
   std::string scene = kScene;
   scene.replace(scene.find("\"spin\": \"free\""), 14, "\"spin\": \"fre\"");

@@ -35,7 +35,7 @@ ClothMotion hand_built() {
 
 }  // namespace
 
-TEST_CASE("cloth jobs: conservative cullers miss nothing; discrete checks miss what passes between them",
+TEST_CASE("cloth jobs: conservative cullers miss nothing, discrete checks miss what passes between them",
           "[cloth][experiments]") {
   const ClothMotion m = hand_built();
   REQUIRE(m.events.size() == 6);  // two pairs x (step 1, step 4, steps 6-7)

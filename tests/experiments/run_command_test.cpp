@@ -214,14 +214,14 @@ TEST_CASE("ccdlab run --truth reuses a stored truth of the same scene only", "[r
   }
 }
 
-TEST_CASE("ccdlab run --list-missed lists every miss; the summary goes beside the results", "[run][cli]") {
+TEST_CASE("ccdlab run --list-missed lists every miss, the summary goes beside the results", "[run][cli]") {
   const TempDir dir;
   const std::string out = (dir.path / "r.json").string();
   json e = small_experiment();
   e.erase("dt");
   e["hz"] = {10, 50};
   const std::string file = dir.write("e.json", e);
-  REQUIRE(ccdlab(file + " -o " + out + " --quiet --list-missed --threads 1", nullptr, &dir) == 0);
+  REQUIRE(ccdlab("run " + file + " -o " + out + " --quiet --list-missed --threads 1", nullptr, &dir) == 0);
   const json r = read(out);
   std::uint64_t listed = 0;
   for (const json& rec : r["records"]) {

@@ -20,7 +20,7 @@ TEST_CASE("a key given twice in one object is an error naming its path", "[io][j
   }
 }
 
-TEST_CASE("nesting is bounded; numbers must fit a double", "[io][json]") {
+TEST_CASE("nesting is bounded, numbers must fit a double", "[io][json]") {
   std::string deep(ccd::kMaxJsonDepth, '[');
   deep += std::string(ccd::kMaxJsonDepth, ']');
   CHECK_NOTHROW(parse_json_text(deep, "f.json"));

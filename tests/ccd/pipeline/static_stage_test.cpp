@@ -19,7 +19,7 @@
 using namespace ccd;
 
 
-TEST_CASE("static stages: index pairs equal brute force; kinematic keeps first contacts", "[pipeline][scenery]") {
+TEST_CASE("static stages: index pairs equal brute force, kinematic keeps first contacts", "[pipeline][scenery]") {
   const Scene scene = test::plates_scene(1406, 40);
   const Trajectories motion(scene);
   const double A = scene.max_acceleration();

@@ -25,7 +25,7 @@ json wrapped_scene() {
 
 }  // namespace
 
-TEST_CASE("box.boundary: one name, or one per axis; reflect by default", "[scene][periodic]") {
+TEST_CASE("box.boundary: one name, or one per axis, reflect by default", "[scene][periodic]") {
   const ccd::Scene s = ccd::scene_from_json(wrapped_scene(), "s.json");
   REQUIRE(s.wraps());
   for (int k = 0; k < 3; ++k) CHECK(s.box->wraps(k));

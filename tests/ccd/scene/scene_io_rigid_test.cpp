@@ -81,7 +81,7 @@ TEST_CASE("a normalised orientation reads back bit for bit, so a written scene k
   CHECK(std::fabs(c.rigid[2].orientation.squaredNorm() - 1.0) <= 1e-15);
 }
 
-TEST_CASE("a rigid scene round-trips as ccdlab-scene/2; a sphere scene stays ccdlab-scene/1", "[scene][rigid]") {
+TEST_CASE("a rigid scene round-trips as ccdlab-scene/2, a sphere scene stays ccdlab-scene/1", "[scene][rigid]") {
   json j = rigid_scene();
   j["bodies"][2]["orientation"] = {0.5, 0.5, 0.5, 0.5};
   const ccd::Scene a = ccd::scene_from_json(j, "s.json");

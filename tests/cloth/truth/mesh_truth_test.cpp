@@ -67,7 +67,7 @@ TEST_CASE("mesh truth: a vertex through a face and an edge across an edge, in on
   }
 }
 
-TEST_CASE("mesh truth: a contact exactly at a state counts in both steps; separate runs are separate events",
+TEST_CASE("mesh truth: a contact exactly at a state counts in both steps, separate runs are separate events",
           "[cloth][truth]") {
   const ClothMesh mesh = two_triangles();
   // z: 1 -> 0 (touching exactly at state 1) -> 1 -> 1/2 -> -1/2 (through again in step 3).
