@@ -13,6 +13,7 @@
 #include <ccd/scene/input_error.hpp>
 
 #include <algorithm>
+#include <functional>
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   ccdlab::ClothExperiment e;
