@@ -165,7 +165,11 @@ def test_scene_positions(times):
         refused(error, "times")
         return
     plain = as_type(times, np.float64)
-    assert plain is not None and plain.ndim == 1 and np.all((0.0 <= plain) & (plain <= scene.horizon))
+    assert plain is not None and plain.ndim >= 1
+    if len(plain) == 0:  # an empty sequence, whatever its inner shape
+        assert positions.shape == (0, 4, 3)
+        return
+    assert plain.ndim == 1 and np.all((0.0 <= plain) & (plain <= scene.horizon))
     assert positions.shape == (len(plain), 4, 3) and np.all(np.isfinite(positions))
 
 
@@ -203,7 +207,8 @@ def test_generator_parameters_as_arrays(bodies, seed):
     if error is not None:
         refused(error, "generate")
         return
-    assert bodies.ndim == 0 and len(scene) == int(bodies.tolist())
+    # A generator parameter is one number, or an array holding one.
+    assert bodies.size == 1 and len(scene) == int(bodies.reshape(-1)[0])
 
 
 # Steps at and beyond the accepted ranges (dt = 1e-30 is over the work limit).
@@ -243,3 +248,26 @@ NO_ARRAYS = {"InputError", "Truth", "load_scene", "load_truth", "methods", "gene
 def test_every_entry_point_is_listed():
     public = {name for name in dir(ccdlab) if not name.startswith("_") and callable(getattr(ccdlab, name))}
     assert public - TESTED - NO_ARRAYS == set(), "entry points without a hostile-input test"
+
+
+def test_values_json_cannot_hold_are_input_errors_naming_the_argument():
+    # Regression: json.dumps refused these with its own ValueError or TypeError ("Out of range
+    # float values are not JSON compliant", "Object of type complex is not JSON serializable"),
+    # naming neither the argument nor the module's InputError.
+    for value in (float("nan"), np.float32("inf"), 1j, np.array([1j, 2]), np.datetime64("2020-01-01")):
+        with pytest.raises(ccdlab.InputError) as err:
+            ccdlab.scene_from_json({"format": "ccdlab-scene/1", "horizon": value, "bodies": []})
+        assert err.value.file == "scene" and "not JSON" in str(err.value)
+        with pytest.raises(ccdlab.InputError) as err:
+            ccdlab.generate("gas", bodies=value)
+        assert err.value.file == "ccdlab.generate(gas)"
+
+
+def test_times_that_are_no_sequence_are_type_errors_naming_times():
+    # Regression: a 0-d array passed pybind11's sequence check, then failed len() with a bare
+    # TypeError "len() of unsized object" that named no argument.
+    scene = ccdlab.scene_from_json(SCENE)
+    for times in (np.array(0.5), np.array(None, dtype=object), 0.5, "0.5", [[0.5]]):
+        with pytest.raises(TypeError, match="times"):
+            scene.positions(times)
+    assert scene.positions(np.array([0.5])).shape == (1, 4, 3)
