@@ -17,7 +17,8 @@ from hypothesis.extra import numpy as hnp
 
 import ccdlab
 
-SETTINGS = settings(max_examples=120, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+# database=None: nothing is written into the source tree (CTest runs the tests from it).
+SETTINGS = settings(max_examples=120, deadline=None, database=None, suppress_health_check=[HealthCheck.too_slow])
 
 DTYPES = st.one_of(
     hnp.boolean_dtypes(),
@@ -200,7 +201,7 @@ COUNTS = st.sampled_from([0, 1, 3, 8, -1, 2.5, float("nan"), float("inf"), 1e9, 
 SMALL_SHAPES = hnp.array_shapes(min_dims=0, max_dims=1, min_side=0, max_side=2)
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=60, deadline=None, database=None)
 @given(bodies=hostile_arrays(SMALL_SHAPES, COUNTS), seed=hostile_arrays(SMALL_SHAPES, COUNTS))
 def test_generator_parameters_as_arrays(bodies, seed):
     scene, error = call(ccdlab.generate, "gas", bodies=bodies, seed=seed)
@@ -215,7 +216,7 @@ def test_generator_parameters_as_arrays(bodies, seed):
 STEPS = st.sampled_from([0.1, 0.25, 0.5, 2.0, 0.0, -0.1, float("nan"), float("inf"), 1e-30, 1e300])
 
 
-@settings(max_examples=25, deadline=None)
+@settings(max_examples=25, deadline=None, database=None)
 @given(dt=hostile_arrays(hnp.array_shapes(min_dims=0, max_dims=2, min_side=0, max_side=3), STEPS))
 def test_experiment_dict_holding_arrays(dt, tmp_path_factory):
     scene = tmp_path_factory.mktemp("scene") / "scene.json"
