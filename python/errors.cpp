@@ -33,9 +33,16 @@ nlohmann::json from_python(const py::handle& obj, const std::string& what) {
     if (py::hasattr(o, "tolist")) return o.attr("tolist")();
     throw py::type_error("not JSON: " + py::repr(o).cast<std::string>());
   });
-  const std::string text = py::module_::import("json")
-                               .attr("dumps")(obj, py::arg("allow_nan") = false, py::arg("default") = plain)
-                               .cast<std::string>();
+  std::string text;
+  try {
+    text = py::module_::import("json")
+               .attr("dumps")(obj, py::arg("allow_nan") = false, py::arg("default") = plain)
+               .cast<std::string>();
+  } catch (const py::error_already_set& err) {
+    // NaN, infinity, a complex number, a date: json's own message, naming the argument.
+    if (!err.matches(PyExc_TypeError) && !err.matches(PyExc_ValueError)) throw;
+    throw ccd::InputError(what, "", "not JSON: " + py::str(err.value()).cast<std::string>());
+  }
   return ccd::parse_json_text(text, what);
 }
 

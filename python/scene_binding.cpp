@@ -39,7 +39,21 @@ py::array_t<double> per_body(const ccd::Scene& s, Get get) {
   return owning_array(std::move(v), {static_cast<py::ssize_t>(s.bodies.size()), 3});
 }
 
-py::array_t<double> positions(const PyScene& self, const std::vector<double>& times) {
+// The times as pybind11's list conversion reads them, with its failures named: a 0-d array
+// passes its sequence check and then fails len() with a bare "len() of unsized object".
+std::vector<double> times_of(const py::object& times) {
+  try {
+    return times.cast<std::vector<double>>();
+  } catch (const py::cast_error&) {
+  } catch (const py::error_already_set& err) {
+    if (!err.matches(PyExc_TypeError)) throw;
+  }
+  throw py::type_error("Scene.positions: times must be a sequence of numbers, got " +
+                       py::repr(times).cast<std::string>().substr(0, 80));
+}
+
+py::array_t<double> positions(const PyScene& self, const py::object& times_object) {
+  const std::vector<double> times = times_of(times_object);
   for (std::size_t i = 0; i < times.size(); ++i)
     if (!(times[i] >= 0.0 && times[i] <= self.scene().horizon))
       throw ccd::InputError("positions", "times[" + std::to_string(i) + "]",

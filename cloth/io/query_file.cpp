@@ -74,7 +74,8 @@ QueryFile parse_query_file(const std::string& text, const std::string& file) {
     for (std::size_t c = 0; c < 7; ++c)
       if (!is_integer(cols[c])) throw InputError(file, where(line_no, c + 1), "not a decimal integer: '" + cols[c].substr(0, 40) + "'");
     for (std::size_t k = 0; k < 3; ++k) {
-      const mpz_class num(cols[2 * k]), den(cols[2 * k + 1]);
+      // Base 10 always: GMP's default (base 0) would read a leading 0 as octal ("010" = 8).
+      const mpz_class num(cols[2 * k], 10), den(cols[2 * k + 1], 10);
       if (sgn(den) <= 0) throw InputError(file, where(line_no, 2 * k + 2), "denominator must be > 0");
       mpq_class v(num, den);
       v.canonicalize();

@@ -60,6 +60,18 @@ TEST_CASE("query files: values, 112-bit integers and round trips", "[cloth][io]"
     }
     CHECK(parse_query_file(crlf, "q.csv").queries[0].x == q.x);
   }
+  SECTION("leading zeros are decimal, not octal") {
+    // Regression (fuzz_query_file): the integers went to GMP with base 0, which reads a
+    // leading 0 as octal: "010" was 8, and "09" (not octal) threw std::invalid_argument out
+    // of the reader, ending `ccdlab ccd` with an uncaught exception instead of exit 2.
+    std::string text = "010,1,-010,04,09,0001,0\n";
+    for (int i = 1; i < 8; ++i) text += "0,1,0,1,0,1,0\n";
+    const auto f = parse_query_file(text, "q.csv");
+    CHECK(f.queries[0].x[0].x() == 10.0);
+    CHECK(f.queries[0].x[0].y() == -2.5);
+    CHECK(f.queries[0].x[0].z() == 9.0);
+    CHECK(f.inexact_coordinates == 0);
+  }
   SECTION("nearest_double rounds to nearest, ties to even") {
     CHECK(nearest_double(mpq_class(1, 3)) == 1.0 / 3.0);
     CHECK(nearest_double(mpq_class(-2, 3)) == -2.0 / 3.0);
