@@ -99,3 +99,16 @@ TEST_CASE("mesh frames: two frames of one mesh", "[cloth][io]") {
   put(dir / "bad.ply", "ply\n");
   CHECK(error_of([&] { read_mesh_frames(dir / "bad.ply", dir / "t1.ply"); }) == dir / "bad.ply" + ": header: no end_header line (the file ends in the header)");
 }
+
+TEST_CASE("mesh files: the fixtures of data/meshes read the same tetrahedron", "[cloth][io]") {
+  // data/meshes: as Blender writes ascii PLY (CRLF, normals, uv, colours, uint indices), as a
+  // simulator writes binary PLY (doubles, velocities, an edge element after the faces), as
+  // a modelling program writes OBJ (v/vt/vn, v//vn with negative indices, v).
+  TriangleMesh tetrahedron;
+  tetrahedron.vertices = {Vec3(0, 0, 0), Vec3(1.5, 0, 0), Vec3(0, 0.25, 0), Vec3(0, 0, -2.125)};
+  tetrahedron.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  for (const char* name : {"tetrahedron-blender.ply", "tetrahedron-simulator.ply", "tetrahedron.obj"}) {
+    INFO(name);
+    CHECK(same_bits(read_mesh(std::string(CCDLAB_SOURCE_DIR) + "/data/meshes/" + name), tetrahedron));
+  }
+}

@@ -8,6 +8,7 @@
 
 using ccd::InputError;
 using ccd::cloth::parse_ply;
+using ccd::cloth::ply_type_is_integer;
 using namespace meshtest;
 
 namespace {
@@ -36,7 +37,13 @@ std::string simple_ply(const TriangleMesh& m, PlyFormat f, PlyType coordinate = 
 
 TEST_CASE("PLY reader: every encoding reads the same mesh bit for bit", "[cloth][io][ply]") {
   const TriangleMesh dyadic = dyadic_mesh();
+  std::vector<Prop> every_type;  // one scalar of each type, and lists of each count type
+  for (PlyType t : kAllTypes) {
+    every_type.push_back({std::string("s_") + type_word(t, false), t});
+    if (ply_type_is_integer(t)) every_type.push_back({std::string("l_") + type_word(t, false), PlyType::Float64, true, t});
+  }
   const std::vector<std::vector<Prop>> vertex_extras{
+      every_type,
       {},
       {{"red", PlyType::UInt8}, {"green", PlyType::UInt8}, {"blue", PlyType::UInt8}, {"alpha", PlyType::UInt8}},
       {{"nx", PlyType::Float32}, {"ny", PlyType::Float32}, {"nz", PlyType::Float32}, {"s", PlyType::Float64}, {"t", PlyType::Float64}},
@@ -60,7 +67,7 @@ TEST_CASE("PLY reader: every encoding reads the same mesh bit for bit", "[cloth]
                 REQUIRE(same_bits(parse_ply(bytes, "t.ply"), dyadic));
                 ++variants;
               }
-  CHECK(variants == 3 * 2 * 4 * 2 * 6 * 4 * 2);
+  CHECK(variants == 3 * 2 * 5 * 2 * 6 * 4 * 2);
 
   SECTION("doubles far from the origin, subnormal, tiny and huge: every format, exactly") {
     const TriangleMesh m = double_mesh();
@@ -215,6 +222,20 @@ TEST_CASE("PLY reader: bad input is one line naming the file, the element and it
           "t1.ply: vertex 2: the file ends before this vertex (truncated body: the header declares 3)");
     CHECK(error_of(head + verts + "3 0 1      ") == "t1.ply: face 0: the line ends before property 'vertex_indices'");
     CHECK(error_of(head + "0 0 0\n1 0     \n0 1 0\n3 0 1 2\n") == "t1.ply: vertex 1: the line ends before property 'z'");
+  }
+  SECTION("negative list counts") {
+    const std::string text = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+                             "property list char float uv\nelement face 0\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0 0 0\n1 0 0 0\n0 1 0 1 0.5\n0 0 1 -2 0.5 0.5\n";
+    CHECK(error_of(text) == "t1.ply: vertex 3: list 'uv' has a negative count -2");
+    Composer c;
+    c.format = PlyFormat::BinaryLittleEndian;
+    std::string bytes = compose_ply(c, {vertex_element(m, PlyType::Float32, {{"uv", PlyType::Float32, true, PlyType::Int16}}),
+                                        face_element(m, PlyType::UInt8, PlyType::Int32)});
+    // vertex 0: uv (2 + 8 bytes), x, y, z (12 bytes): its count is the first two bytes of the body
+    const std::size_t body = bytes.find("end_header\n") + 11;
+    bytes[body + 1] = '\x80';
+    CHECK(error_of(bytes) == "t1.ply: vertex 0: list 'uv' has a negative count -32766");
   }
   SECTION("bytes or text after the last element") {
     CHECK(error_of(head + verts + "3 0 1 2\n\n0 0 0\n") == "t1.ply: line 15: text after the last element: '0'");
