@@ -44,18 +44,19 @@ std::vector<ElementPlan> plan_of(const PlyHeader& h, const std::string& file) {
       if (plan.vertex && (p.name == "x" || p.name == "y" || p.name == "z")) {
         if (p.list) throw InputError(file, "header", "vertex property '" + p.name + "' is a list, not a number");
         r = p.name == "x" ? Role::X : p.name == "y" ? Role::Y : Role::Z;
-        ++found;
+        found |= 1 << (static_cast<int>(r) - 1);
       } else if (plan.face && (p.name == "vertex_indices" || p.name == "vertex_index") && found == 0) {
         if (!p.list) throw InputError(file, "header", "face property '" + p.name + "' is not a list");
         if (!ply_type_is_integer(p.type))
           throw InputError(file, "header", "face property '" + p.name + "': the index type " + ply_type_name(p.type) + " is not an integer type");
         r = Role::Indices;
-        found = 3;
+        found = 7;
       }
       plan.roles.push_back(r);
     }
-    if (plan.vertex && found != 3) throw InputError(file, "header", "the vertex element lacks one of the properties x, y, z");
-    if (plan.face && found != 3) throw InputError(file, "header", "the face element has no list property vertex_indices (or vertex_index)");
+    for (int k = 0; k < 3 && plan.vertex; ++k)
+      if (!(found & (1 << k))) throw InputError(file, "header", std::string("the vertex element has no property '") + "xyz"[k] + "'");
+    if (plan.face && found != 7) throw InputError(file, "header", "the face element has no list property vertex_indices (or vertex_index)");
     has_vertex |= plan.vertex;
     has_face |= plan.face;
     plans.push_back(std::move(plan));

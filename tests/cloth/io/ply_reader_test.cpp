@@ -178,7 +178,7 @@ TEST_CASE("PLY reader: bad input is one line naming the file, the element and it
           "t1.ply: header line 3: unknown keyword 'vertices' (format, element, property, comment, obj_info, end_header)");
     CHECK(error_of("ply\nformat ascii 1.0\nelement v\x01rtex 3\n") == "t1.ply: header line 3: a byte that is not printable ASCII in a header line");
     CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n") ==
-          "t1.ply: header: the vertex element lacks one of the properties x, y, z");
+          "t1.ply: header: the vertex element has no property 'z'");
     CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\nproperty float z\n"
                    "element face 0\nproperty list uchar float vertex_indices\nend_header\n") ==
           "t1.ply: header: face property 'vertex_indices': the index type float is not an integer type");
