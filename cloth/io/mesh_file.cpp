@@ -6,9 +6,11 @@
 #include <cloth/io/regular_file.hpp>
 
 #include <ccd/scene/input_error.hpp>
+#include <ccd/util/parallel_for.hpp>
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 
 namespace ccd::cloth {
 
@@ -48,8 +50,20 @@ MeshFrames mesh_frames(TriangleMesh frame0, TriangleMesh frame1, const std::stri
   return MeshFrames{std::move(frame0.vertices), std::move(frame1.vertices), std::move(frame0.faces)};
 }
 
-MeshFrames read_mesh_frames(const std::string& path0, const std::string& path1) {
-  return mesh_frames(read_mesh(path0), read_mesh(path1), path0, path1);
+MeshFrames read_mesh_frames(const std::string& path0, const std::string& path1, unsigned threads) {
+  std::array<TriangleMesh, 2> frames;
+  std::array<std::exception_ptr, 2> errors;
+  const std::array<const std::string*, 2> paths{&path0, &path1};
+  parallel_for(2, threads, [&](std::size_t k, unsigned) {
+    try {
+      frames[k] = read_mesh(*paths[k]);
+    } catch (...) {
+      errors[k] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return mesh_frames(std::move(frames[0]), std::move(frames[1]), path0, path1);
 }
 
 }  // namespace ccd::cloth

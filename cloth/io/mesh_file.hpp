@@ -22,7 +22,9 @@ struct MeshFrames {
 /// Reads two frames and checks that they are frames of one mesh: the same number of
 /// vertices and the same faces in the same order. Throws InputError naming the file and
 /// what differs (`t1.ply: face 17: (4, 5, 9) differs from t0.ply's face 17 (4, 5, 6)`).
-MeshFrames read_mesh_frames(const std::string& path0, const std::string& path1);
+/// With threads >= 2 the two files are read at once; the error reported is the same
+/// (the first frame's, if both are bad).
+MeshFrames read_mesh_frames(const std::string& path0, const std::string& path1, unsigned threads = 1);
 
 /// The same check on meshes already read (`name0`, `name1` name them in errors).
 MeshFrames mesh_frames(TriangleMesh frame0, TriangleMesh frame1, const std::string& name0, const std::string& name1);

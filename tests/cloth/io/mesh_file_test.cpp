@@ -76,9 +76,11 @@ TEST_CASE("mesh frames: two frames of one mesh", "[cloth][io]") {
   for (Vec3& v : t1.vertices) v += Vec3(0.25, -0.5, 1);
   ccd::cloth::write_ply(dir / "t0.ply", t0);
   ccd::cloth::write_obj(dir / "t1.obj", t1);
-  const MeshFrames frames = read_mesh_frames(dir / "t0.ply", dir / "t1.obj");
-  CHECK(same_bits(TriangleMesh{frames.vertices0, frames.faces}, t0));
-  CHECK(same_bits(TriangleMesh{frames.vertices1, frames.faces}, t1));
+  for (unsigned threads : {1u, 2u}) {
+    const MeshFrames frames = read_mesh_frames(dir / "t0.ply", dir / "t1.obj", threads);
+    CHECK(same_bits(TriangleMesh{frames.vertices0, frames.faces}, t0));
+    CHECK(same_bits(TriangleMesh{frames.vertices1, frames.faces}, t1));
+  }
 
   TriangleMesh other = t1;
   other.faces[3] = {6, 5, 3};
@@ -95,9 +97,14 @@ TEST_CASE("mesh frames: two frames of one mesh", "[cloth][io]") {
   ccd::cloth::write_ply(dir / "t1.ply", other);
   CHECK(error_of([&] { read_mesh_frames(dir / "t0.ply", dir / "t1.ply"); }) ==
         dir / "t1.ply" + ": has 8 vertices, " + dir / "t0.ply" + " has 7 (frames of one mesh have the same vertices)");
-  // The first frame's errors come first.
+  // The first frame's errors come first, whatever the threads.
   put(dir / "bad.ply", "ply\n");
-  CHECK(error_of([&] { read_mesh_frames(dir / "bad.ply", dir / "t1.ply"); }) == dir / "bad.ply" + ": header: no end_header line (the file ends in the header)");
+  for (unsigned threads : {1u, 2u}) {
+    CHECK(error_of([&] { read_mesh_frames(dir / "bad.ply", dir / "missing.obj", threads); }) ==
+          dir / "bad.ply" + ": header: no end_header line (the file ends in the header)");
+    CHECK(error_of([&] { read_mesh_frames(dir / "t0.ply", dir / "bad.ply", threads); }) ==
+          dir / "bad.ply" + ": header: no end_header line (the file ends in the header)");
+  }
 }
 
 TEST_CASE("mesh files: the fixtures of data/meshes read the same tetrahedron", "[cloth][io]") {
