@@ -56,13 +56,14 @@ inline bool same_bits(const TriangleMesh& a, const TriangleMesh& b) {
 }
 
 // The mesh with every coordinate rounded to the nearest float.
-// (Through floats held in an array: GCC 12 at -O3 dropped the rounding of two of the three
-// coordinates when it was written in place into the Eigen vector.)
+// Each float goes through a volatile: GCC 12 at -O3 dropped the double -> float -> double
+// rounding of some coordinates when the conversions could be folded together.
+inline double rounded_to_float(double x) {
+  volatile float f = static_cast<float>(x);
+  return static_cast<double>(f);
+}
 inline TriangleMesh as_floats(TriangleMesh m) {
-  for (Vec3& v : m.vertices) {
-    const std::array<float, 3> f{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-    v = Vec3(static_cast<double>(f[0]), static_cast<double>(f[1]), static_cast<double>(f[2]));
-  }
+  for (Vec3& v : m.vertices) v = Vec3(rounded_to_float(v.x()), rounded_to_float(v.y()), rounded_to_float(v.z()));
   return m;
 }
 
