@@ -53,8 +53,8 @@ bool overlap(const Box& x, const Box& y) {
 
 Box to_box(const Aabb& a) { return {{a.lo[0], a.lo[1], a.lo[2]}, {a.hi[0], a.hi[1], a.hi[2]}}; }
 
-// The boxes of one window: bodies, polygons, then images of bodies that meet the cell.
-// Returns the body count used for the mean (n).
+// The boxes of one window: bodies, polygons, then images of bodies that meet the cell;
+// mean and extent are summed over the bodies' boxes only.
 void window_boxes(const Trajectories& traj, std::span<const double> grow, std::span<const Aabb> polygons, double w0,
                   double w1, WindowScratch& sc, double mean[3], double extent[3]) {
   const std::size_t n = traj.size();
