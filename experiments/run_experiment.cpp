@@ -13,9 +13,7 @@
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/util/parallel_for.hpp>
 #include <ccd/util/parameters.hpp>
-#include <ccd/truth/ground_truth.hpp>
-#include <ccd/truth/rigid_static_truth.hpp>
-#include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 
 #include <algorithm>
@@ -148,48 +146,29 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   const auto t0 = std::chrono::steady_clock::now();
   const ccd::Trajectories traj(scene);
   ccd::TruthOptions topts;
-  topts.threads = options.threads;
+  topts.threads = static_cast<unsigned>(std::max(0, options.threads));
+  topts.cancel = options.cancel;
   topts.progress = [&progress](std::size_t done, std::size_t total) {
     progress.advance("candidate pairs solved", done, total);
   };
-  // Scenes with non-sphere shapes: the rigid motion for the narrow phase and the certified
-  // rigid truth (ccd/truth/rigid_truth.hpp); sphere scenes keep the exact path untouched.
+  // Scenes with non-sphere shapes: the rigid motion for the narrow phase; sphere scenes
+  // keep the exact path untouched. The truth takes the scene's motion in every case.
   std::optional<ccd::RigidMotion> rigid;
   if (scene.has_non_spheres()) rigid.emplace(scene, traj);
-  double truth_error = 0.0;
-  std::vector<ccd::ContactEvent> truth_events;
-  if (options.truth) {
-    truth_events = options.truth->events;
-    truth_error = ccd::largest_error(options.truth->errors);
-  } else if (rigid) {
-    ccd::RigidTruthOptions ropts;
-    ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
-    ropts.cancel = options.cancel;
-    ccd::RigidTruthResult r = ccd::compute_rigid_truth(*rigid, ropts);
-    truth_error = ccd::largest_error(r.errors);
-    truth_events = std::move(r.events);
-  } else {
-    truth_events = ccd::compute_truth(traj, topts);
+  // The stored truth (its static events too, when it has them), else one computed truth.
+  ccd::Truth computed;
+  const bool stored_complete = options.truth && (scene.scenery.empty() || options.truth->has_scenery);
+  if (!stored_complete) {
+    const ccd::RigidMotion motion(scene, traj);
+    computed = ccd::compute_truth(motion, scene.scenery, topts);
+    if (computed.stats.cancelled) return json();
   }
-  const TruthIndex truth(std::move(truth_events));
-  // Body-static events: the stored truth's, else computed (empty without scenery).
-  // Rigid bodies' static events are certified brackets: their errors widen the matching
-  // window as the body-body ones do.
-  std::vector<ccd::StaticEvent> static_events;
-  if (!scene.scenery.empty()) {
-    if (options.truth && options.truth->has_scenery) {
-      static_events = options.truth->static_events;
-      truth_error = std::max(truth_error, ccd::largest_error(options.truth->static_errors));
-    } else if (rigid) {
-      ccd::RigidTruthOptions ropts;
-      ropts.threads = static_cast<unsigned>(std::max(0, options.threads));
-      ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(*rigid, scene.scenery, ropts);
-      truth_error = std::max(truth_error, ccd::largest_error(r.errors));
-      static_events = std::move(r.events);
-    } else {
-      static_events = ccd::compute_static_truth(traj, scene.scenery, static_cast<unsigned>(std::max(0, options.threads)));
-    }
-  }
+  const ccd::Truth& body_truth = options.truth ? *options.truth : computed;
+  const ccd::Truth& static_truth = stored_complete ? *options.truth : computed;
+  // Certified events (rigid bodies) widen the matching window by their largest error.
+  const double truth_error = std::max(ccd::largest_error(body_truth.errors), ccd::largest_error(static_truth.static_errors));
+  const TruthIndex truth(std::vector<ccd::ContactEvent>(body_truth.events));
+  const std::vector<ccd::StaticEvent>& static_events = static_truth.static_events;
   const double truth_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::size_t tangent = 0;
   std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;

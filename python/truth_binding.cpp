@@ -1,13 +1,18 @@
-// ccdlab.truth(scene) and ccdlab.load_truth(path): the exact contact intervals as numpy
-// arrays. The arrays a, b, enter, exit are strided views of one event table (no copy);
-// enter_error, exit_error and grazing exist when the truth has error fields (else None).
+// ccdlab.truth(scene) and ccdlab.load_truth(path): the contact intervals as numpy arrays,
+// for every kind of scene (ccd/truth/truth.hpp: the call `ccdlab truth` makes). The arrays
+// a, b, enter, exit are strided views of one event table (no copy); enter_error,
+// exit_error and grazing exist when the truth has error fields (else None); static_body,
+// static_polygon, static_enter, static_exit (and static_enter_error, static_exit_error,
+// static_grazing when certified) hold the body-scenery events of a scene with scenery.
 #include "bindings.hpp"
 #include "interruptible.hpp"
 
 #include <ccd/scene/scene_digest.hpp>
-#include <ccd/truth/ground_truth.hpp>
+#include <ccd/motion/rigid_motion.hpp>
+#include <ccd/truth/truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 
+#include <atomic>
 #include <cstddef>
 
 namespace ccdlab::python {
@@ -23,7 +28,46 @@ struct PyTruth {
   py::object owner;  ///< keeps `file` alive for the views
   py::array a, b, enter, exit;
   py::object enter_error = py::none(), exit_error = py::none(), grazing = py::none();
+  /// Body-scenery events (None without scenery): body, polygon (uint32), enter, exit (s),
+  /// and their error fields (None when every static event is exact).
+  py::object static_body = py::none(), static_polygon = py::none(), static_enter = py::none(),
+             static_exit = py::none();
+  py::object static_enter_error = py::none(), static_exit_error = py::none(), static_grazing = py::none();
 };
+
+// The error fields of `errors` as arrays (enter_error, exit_error, grazing).
+void error_arrays(const std::vector<ccd::EventError>& errors, py::object& enter_error, py::object& exit_error,
+                  py::object& grazing) {
+  const auto n = static_cast<py::ssize_t>(errors.size());
+  std::vector<double> enter, exit;
+  py::array_t<bool> g(n);
+  for (std::size_t i = 0; i < errors.size(); ++i) {
+    enter.push_back(errors[i].enter_error);
+    exit.push_back(errors[i].exit_error);
+    g.mutable_at(static_cast<py::ssize_t>(i)) = errors[i].grazing;
+  }
+  enter_error = owning_array(std::move(enter), {n});
+  exit_error = owning_array(std::move(exit), {n});
+  grazing = g;
+}
+
+void static_arrays(const ccd::Truth& truth, PyTruth& t) {
+  if (!truth.has_scenery) return;
+  const auto n = static_cast<py::ssize_t>(truth.static_events.size());
+  std::vector<std::uint32_t> body, polygon;
+  std::vector<double> enter, exit;
+  for (const ccd::StaticEvent& e : truth.static_events) {
+    body.push_back(e.body);
+    polygon.push_back(e.polygon);
+    enter.push_back(e.enter);
+    exit.push_back(e.exit);
+  }
+  t.static_body = owning_array(std::move(body), {n});
+  t.static_polygon = owning_array(std::move(polygon), {n});
+  t.static_enter = owning_array(std::move(enter), {n});
+  t.static_exit = owning_array(std::move(exit), {n});
+  if (!truth.static_errors.empty()) error_arrays(truth.static_errors, t.static_enter_error, t.static_exit_error, t.static_grazing);
+}
 
 PyTruth make_truth(ccd::TruthFile truth) {
   PyTruth t;
@@ -43,20 +87,8 @@ PyTruth make_truth(ccd::TruthFile truth) {
       py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, exit), t.owner);
   for (py::array* view : {&t.a, &t.b, &t.enter, &t.exit})  // read-only views of the table
     view->attr("flags").attr("writeable") = false;
-  if (!t.file->errors.empty()) {
-    std::vector<double> enter_error, exit_error;
-    std::vector<bool> grazing;
-    for (const ccd::EventError& e : t.file->errors) {
-      enter_error.push_back(e.enter_error);
-      exit_error.push_back(e.exit_error);
-      grazing.push_back(e.grazing);
-    }
-    t.enter_error = owning_array(std::move(enter_error), {n});
-    t.exit_error = owning_array(std::move(exit_error), {n});
-    py::array_t<bool> g(n);
-    for (py::ssize_t i = 0; i < n; ++i) g.mutable_at(i) = grazing[static_cast<std::size_t>(i)];
-    t.grazing = g;
-  }
+  if (!t.file->errors.empty()) error_arrays(t.file->errors, t.enter_error, t.exit_error, t.grazing);
+  static_arrays(*t.file, t);
   return t;
 }
 
@@ -73,6 +105,13 @@ void bind_truth(py::module_& m) {
       .def_readonly("enter_error", &PyTruth::enter_error)
       .def_readonly("exit_error", &PyTruth::exit_error)
       .def_readonly("grazing", &PyTruth::grazing)
+      .def_readonly("static_body", &PyTruth::static_body)
+      .def_readonly("static_polygon", &PyTruth::static_polygon)
+      .def_readonly("static_enter", &PyTruth::static_enter)
+      .def_readonly("static_exit", &PyTruth::static_exit)
+      .def_readonly("static_enter_error", &PyTruth::static_enter_error)
+      .def_readonly("static_exit_error", &PyTruth::static_exit_error)
+      .def_readonly("static_grazing", &PyTruth::static_grazing)
       .def_property_readonly("horizon", [](const PyTruth& t) { return t.file->horizon; })
       .def_property_readonly("scene_sha256", [](const PyTruth& t) { return t.file->scene_sha256; })
       .def("__len__", [](const PyTruth& t) { return t.file->events.size(); })
@@ -87,19 +126,24 @@ void bind_truth(py::module_& m) {
   m.def(
       "truth",
       [](const PyScene& scene, unsigned threads) {
-        ccd::TruthFile file = run_interruptible([&]() {
-          ccd::TruthOptions options;
-          options.threads = threads;
-          ccd::TruthFile f;
-          f.horizon = scene.scene().horizon;
-          f.events = ccd::compute_truth(*scene.trajectories(), options);
-          f.scene_sha256 = ccd::scene_digest(scene.scene());
-          return f;
-        });
-        return make_truth(std::move(file));
+        std::atomic<bool> cancel{false};
+        ccd::Truth truth = run_interruptible(
+            [&]() {
+              ccd::TruthOptions options;
+              options.threads = threads;
+              options.cancel = &cancel;
+              const ccd::RigidMotion motion(scene.scene(), *scene.trajectories());
+              ccd::Truth t = ccd::compute_truth(motion, scene.scene().scenery, options);
+              t.scene_sha256 = ccd::scene_digest(scene.scene());
+              return t;
+            },
+            &cancel);
+        return make_truth(std::move(truth));
       },
       py::arg("scene"), py::arg("threads") = 0,
-      "The exact ground truth of the scene (threads=0: every core); Ctrl-C waits for it to finish");
+      "The ground truth of the scene, as `ccdlab truth` computes it (threads=0: every core): exact for "
+      "spheres, certified brackets with error fields for other shapes, static events with scenery; "
+      "Ctrl-C stops it");
   m.def(
       "load_truth",
       [](const std::string& path) {

@@ -25,6 +25,14 @@ RigidMotion::RigidMotion(const Scene& scene, const Trajectories& centres)
   }
 }
 
+RigidMotion::RigidMotion(const Trajectories& centres) : centres_(&centres) {
+  points_.push_back({Vec3::Zero()});
+  kinds_.assign(centres.size(), ShapeKind::Sphere);
+  point_set_.assign(centres.size(), 0);
+  proxy_radius_.reserve(centres.size());
+  for (std::size_t i = 0; i < centres.size(); ++i) proxy_radius_.push_back(centres.radius(i));
+}
+
 void RigidMotion::assign_images(const RigidMotion& source, const Trajectories& centres,
                                 std::span<const std::uint32_t> owner, double t0, double t1) {
   centres_ = &centres;

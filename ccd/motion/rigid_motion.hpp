@@ -29,6 +29,9 @@ class RigidMotion {
  public:
   /// `centres` must outlive this object and be the trajectories of `scene`.
   RigidMotion(const Scene& scene, const Trajectories& centres);
+  /// Every body of `centres` a ball of its radius, with no rotations (a scene of plain
+  /// spheres). `centres` must outlive this object.
+  explicit RigidMotion(const Trajectories& centres);
   /// No bodies yet (for assign_images).
   RigidMotion() = default;
   /// Makes this the motion of the local bodies of one step [t0, t1] of a scene that wraps

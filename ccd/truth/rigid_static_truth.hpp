@@ -12,10 +12,9 @@
 // body-body rigid events (time tolerance, band and evaluation limit from
 // RigidTruthOptions; the band's size term is the body's enclosing radius plus the
 // polygon's circumradius about its first vertex).
-// Candidates: the horizon is cut into the rigid truth's windows; a (body, polygon) pair is
-// searched on each run of consecutive windows where the body's swept box (its enclosing
-// sphere's, grown by a rounding margin) overlaps the polygon's box. Pairs go to threads;
-// the result does not depend on the thread count.
+// The scene's truth is compute_truth (ccd/truth/truth.hpp): the candidate finder
+// (ccd/truth/truth_candidates.hpp) gives the (body, polygon, run of windows) and the truth
+// table (ccd/truth/truth_table.hpp) calls the search below for every kind but spheres.
 // Bodies of kind Sphere (plain or spinning: the spin does not move a ball's points) keep
 // the exact sphere-polygon truth (ccd/truth/static_truth.hpp; errors 0), so a scene's
 // sphere events are bit-identical whether or not it also holds other shapes.
@@ -48,8 +47,8 @@ std::size_t body_polygon_bracket_events(const RigidMotion& motion, std::uint32_t
                                         std::size_t max_evaluations, std::vector<StaticEvent>& events,
                                         std::vector<EventError>& errors);
 
-/// Every static event of the scene over [0, horizon] (see the header comment). Options as
-/// for the body-body rigid truth (generic_spheres ignored: spheres stay exact).
+/// The static events of compute_truth (ccd/truth/truth.hpp) with these options
+/// (generic_spheres ignored: spheres stay exact); errors has one entry per event.
 RigidStaticTruthResult compute_rigid_static_truth(const RigidMotion& motion, std::span<const StaticPolygon> scenery,
                                                   const RigidTruthOptions& options = {});
 

@@ -2,14 +2,13 @@
 
 #include <ccd/queries/convex_distance.hpp>
 #include <ccd/truth/bracket_search.hpp>
-#include <ccd/truth/pair_contact.hpp>
-#include <ccd/util/parallel_for.hpp>
+#include <ccd/truth/truth.hpp>
+#include <ccd/truth/truth_table.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <thread>
 #include <tuple>
 
 namespace ccd {
@@ -33,26 +32,6 @@ BracketSearch pair_search(const RigidMotion& m, std::uint32_t a, std::uint32_t b
   return BracketSearch(probe, lipschitz, tol, band, max_evaluations);
 }
 
-std::size_t auto_windows(const RigidMotion& m) {
-  const Trajectories& traj = m.centres();
-  if (traj.size() == 0) return 1;
-  double path = 0.0, diameter = 0.0;
-  for (std::size_t i = 0; i < traj.size(); ++i) {
-    const Aabb box = traj.swept_bounds(i, 0.0, traj.horizon());
-    path += (box.hi - box.lo).maxCoeff() - 2.0 * traj.radius(i);
-    diameter += 2.0 * traj.radius(i);
-  }
-  const double w = std::ceil(0.5 * path / std::max(diameter, 1e-300));
-  return static_cast<std::size_t>(std::clamp(w, 1.0, static_cast<double>(TruthOptions::max_auto_windows)));
-}
-
-struct Candidate {
-  std::uint32_t a, b, window;
-};
-
-}  // namespace
-
-namespace {
 
 // The events of one finished search (ccd/truth/bracket_search.hpp), appended to events
 // and errors as events of the pair (a, b).
@@ -197,130 +176,24 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, 
   return evaluations;
 }
 
-std::size_t rigid_truth_windows(const RigidMotion& m, const RigidTruthOptions& options) {
-  return options.windows ? options.windows : auto_windows(m);
-}
-
 RigidTruthResult compute_rigid_truth(const RigidMotion& m, const RigidTruthOptions& options) {
+  TruthOptions o;
+  o.threads = options.threads;
+  o.windows = options.windows;
+  o.time_tolerance = options.time_tolerance;
+  o.max_evaluations = options.max_evaluations;
+  o.cancel = options.cancel;
+  if (options.generic_spheres) o.table = &bracket_truth_table();
+  Truth t = compute_truth(m, {}, o);
   RigidTruthResult out;
-  const Trajectories& traj = m.centres();
-  const double T = traj.horizon();
-  const double tol = options.time_tolerance > 0.0 ? options.time_tolerance : std::ldexp(T, -30);
-  const std::size_t W = rigid_truth_windows(m, options);
-  const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  out.stats.windows = W;
-  out.stats.threads = threads;
-  const auto n = static_cast<std::uint32_t>(traj.size());
-  auto window_start = [&](std::size_t w) { return w == W ? T : T * static_cast<double>(w) / static_cast<double>(W); };
-
-  // 1. Candidate (pair, window) entries: sort and sweep of swept boxes along x per window.
-  std::vector<std::vector<Candidate>> per_window(W);
-  parallel_for(W, threads, [&](std::size_t w, unsigned) {
-    const double u0 = window_start(w), u1 = window_start(w + 1);
-    std::vector<Aabb> boxes(n);
-    std::vector<std::uint32_t> owner(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      boxes[i] = traj.swept_bounds(i, u0, u1);
-      // Rounding margin: the swept box is computed in doubles.
-      const double margin = 1e-9 * (1.0 + boxes[i].lo.cwiseAbs().maxCoeff() + boxes[i].hi.cwiseAbs().maxCoeff());
-      boxes[i].lo.array() -= margin;
-      boxes[i].hi.array() += margin;
-      owner[i] = i;
-    }
-    // A box that wraps around: every image of a box that meets the cell joins the sweep,
-    // owned by its body (ccd/scene/periodic.hpp, for_each_image); two bodies that can touch
-    // through some image shift have two such images that overlap.
-    if (const PeriodicBox* pb = traj.periodic())
-      for (std::uint32_t i = 0; i < n; ++i)
-        pb->for_each_image(Aabb(boxes[i]), [&](const ImageShift& s) {
-          if (s == ImageShift{0, 0, 0}) return;
-          const Vec3 o = pb->offset(s);
-          const Aabb image{boxes[i].lo + o, boxes[i].hi + o};
-          boxes.push_back(image);
-          owner.push_back(i);
-        });
-    std::vector<std::uint32_t> order(boxes.size());
-    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return boxes[x].lo.x() < boxes[y].lo.x(); });
-    auto& cands = per_window[w];
-    for (std::size_t p = 0; p < order.size(); ++p) {
-      const Aabb& bp = boxes[order[p]];
-      for (std::size_t q = p + 1; q < order.size() && boxes[order[q]].lo.x() <= bp.hi.x(); ++q) {
-        if (!bp.overlaps(boxes[order[q]])) continue;
-        const std::uint32_t x = owner[order[p]], y = owner[order[q]];
-        if (x == y) continue;
-        cands.push_back({std::min(x, y), std::max(x, y), static_cast<std::uint32_t>(w)});
-      }
-    }
-    if (traj.periodic()) {  // a pair may overlap through several images
-      std::sort(cands.begin(), cands.end(), [](const Candidate& c, const Candidate& d) { return std::tie(c.a, c.b) < std::tie(d.a, d.b); });
-      cands.erase(std::unique(cands.begin(), cands.end(), [](const Candidate& c, const Candidate& d) { return c.a == d.a && c.b == d.b; }),
-                  cands.end());
-    }
-  });
-  std::vector<Candidate> all;
-  for (auto& c : per_window) all.insert(all.end(), c.begin(), c.end());
-  std::sort(all.begin(), all.end(), [](const Candidate& x, const Candidate& y) {
-    return std::tie(x.a, x.b, x.window) < std::tie(y.a, y.b, y.window);
-  });
-  // 2. Runs of consecutive windows per pair.
-  struct Run {
-    std::uint32_t a, b;
-    double u0, u1;
-  };
-  std::vector<Run> runs;
-  for (std::size_t i = 0; i < all.size();) {
-    std::size_t k = i + 1;
-    while (k < all.size() && all[k].a == all[i].a && all[k].b == all[i].b && all[k].window == all[k - 1].window + 1) ++k;
-    runs.push_back({all[i].a, all[i].b, window_start(all[i].window), window_start(all[k - 1].window + 1)});
-    i = k;
-  }
-  out.stats.candidate_runs = runs.size();
-  // 3. Solve each run.
-  std::vector<std::vector<ContactEvent>> ev(runs.size());
-  std::vector<std::vector<EventError>> er(runs.size());
-  std::vector<std::size_t> evals(runs.size(), 0);
-  parallel_for(runs.size(), threads, [&](std::size_t r, unsigned) {
-    if (options.cancel && options.cancel->load(std::memory_order_relaxed)) return;  // cancelled: skip the rest
-    const Run& run = runs[r];
-    if (!options.generic_spheres && m.kind(run.a) == ShapeKind::Sphere && m.kind(run.b) == ShapeKind::Sphere) {
-      std::vector<ContactInterval> iv;
-      pair_contact_intervals(traj, run.a, run.b, run.u0, run.u1, iv);
-      for (const ContactInterval& x : iv) {
-        ev[r].push_back({run.a, run.b, x.enter, x.exit});
-        er[r].push_back({});
-      }
-      return;
-    }
-    evals[r] = traj.periodic()
-                   ? periodic_pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r])
-                   : pair_bracket_events(m, run.a, run.b, run.u0, run.u1, tol, options.max_evaluations, ev[r], er[r]);
-  });
-  for (std::size_t r = 0; r < runs.size(); ++r) {
-    out.stats.evaluations += evals[r];
-    for (std::size_t k = 0; k < ev[r].size(); ++k) {
-      out.events.push_back(ev[r][k]);
-      out.errors.push_back(er[r][k]);
-    }
-  }
-  // 4. Sort by (enter, a, b), errors alongside.
-  std::vector<std::size_t> order(out.events.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t x, std::size_t y) { return event_order(out.events[x], out.events[y]); });
-  std::vector<ContactEvent> events;
-  std::vector<EventError> errors;
-  for (std::size_t i : order) {
-    events.push_back(out.events[i]);
-    errors.push_back(out.errors[i]);
-    out.stats.grazing += out.errors[i].grazing;
-  }
-  out.events = std::move(events);
-  out.errors = std::move(errors);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const ContactEvent& e : out.events) pairs.push_back({e.a, e.b});
-  std::sort(pairs.begin(), pairs.end());
-  out.stats.pairs_in_contact = static_cast<std::size_t>(std::unique(pairs.begin(), pairs.end()) - pairs.begin());
+  out.errors = t.errors.empty() ? std::vector<EventError>(t.events.size()) : std::move(t.errors);
+  out.events = std::move(t.events);
+  out.stats.windows = t.stats.windows;
+  out.stats.threads = t.stats.threads;
+  out.stats.candidate_runs = t.stats.candidate_runs;
+  out.stats.evaluations = t.stats.evaluations;
+  out.stats.grazing = t.stats.grazing;
+  out.stats.pairs_in_contact = t.stats.pairs_in_contact;
   return out;
 }
 

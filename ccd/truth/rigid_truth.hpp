@@ -26,10 +26,9 @@
 // Sphere x sphere pairs take the exact solver (ccd/truth/pair_contact.hpp; errors 0)
 // unless `generic_spheres` asks for the bracket search (the cross-path test).
 //
-// Candidates: the horizon is cut into windows; in each, every body's swept box (its
-// enclosing sphere's, ccd::Trajectories::swept_bounds, grown by a rounding margin) is
-// swept along x; a pair is searched on each run of consecutive windows where its boxes
-// overlap. Pairs and runs go to threads; the result does not depend on the thread count.
+// The scene's truth is compute_truth (ccd/truth/truth.hpp): it finds the candidate runs
+// (ccd/truth/truth_candidates.hpp) and calls the search below through the truth table
+// (ccd/truth/truth_table.hpp) for every pair of kinds but sphere x sphere.
 //
 // A box that wraps around (ccd/scene/periodic.hpp): the images of every swept box that
 // meet the cell join the sweep (a pair is a candidate when any two of its images' boxes
@@ -82,7 +81,7 @@ struct RigidTruthResult {
   RigidTruthStats stats;
 };
 
-/// The same in a scene that wraps around (motion.centres().periodic()): per common
+/// The bracket search of one pair in a scene that wraps around (motion.centres().periodic()): per common
 /// trajectory piece in [u0, u1] and image shift of b that can bring the enclosing spheres
 /// within contact, the bracket search with b's centre on that image; events merged where
 /// their brackets meet (see the header comment). max_evaluations bounds the sum.
@@ -90,10 +89,8 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& motion, std::uint32_
                                          double u1, double time_tolerance, std::size_t max_evaluations,
                                          std::vector<ContactEvent>& events, std::vector<EventError>& errors);
 
-/// The number of windows the rigid truths cut the horizon into: options.windows, or when 0
-/// the automatic count (see RigidTruthOptions::windows).
-std::size_t rigid_truth_windows(const RigidMotion& motion, const RigidTruthOptions& options);
-
+/// compute_truth (ccd/truth/truth.hpp) without scenery, with these options
+/// (generic_spheres: bracket_truth_table()); errors has one entry per event.
 RigidTruthResult compute_rigid_truth(const RigidMotion& motion, const RigidTruthOptions& options = {});
 
 /// The bracket search of one pair on [u0, u1] (see the header comment); appends events

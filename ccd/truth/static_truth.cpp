@@ -2,8 +2,9 @@
 
 #include <ccd/geometry/aabb.hpp>
 #include <ccd/queries/sphere_polygon.hpp>
+#include <ccd/motion/rigid_motion.hpp>
 #include <ccd/truth/pair_contact.hpp>
-#include <ccd/util/parallel_for.hpp>
+#include <ccd/truth/truth.hpp>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -72,37 +73,12 @@ void body_polygon_intervals(const Trajectories& traj, std::uint32_t body, const 
   append_intervals(traj, body, poly, polygon_box(poly), u0, u1, scratch, out);
 }
 
-void append_body_static_events(const Trajectories& traj, std::uint32_t body, std::span<const StaticPolygon> scenery,
-                               std::span<const Aabb> boxes, std::vector<StaticEvent>& out) {
-  // The whole path's box first (grown like piece_box): most polygons end here.
-  Aabb whole = traj.swept_bounds(body, 0.0, traj.horizon());
-  const double m = 1e-9 * (whole.lo.cwiseAbs().maxCoeff() + whole.hi.cwiseAbs().maxCoeff() + traj.radius(body));
-  whole.lo.array() -= m;
-  whole.hi.array() += m;
-  std::vector<ContactInterval> scratch, merged;
-  for (std::size_t j = 0; j < scenery.size(); ++j) {
-    if (!whole.overlaps(boxes[j])) continue;
-    if (scenery[j].vertices.size() < 3) continue;
-    merged.clear();
-    append_intervals(traj, body, scenery[j], boxes[j], 0.0, traj.horizon(), scratch, merged);
-    for (const ContactInterval& c : merged) out.push_back({body, static_cast<std::uint32_t>(j), c.enter, c.exit});
-  }
-}
-
 std::vector<StaticEvent> compute_static_truth(const Trajectories& traj, std::span<const StaticPolygon> scenery,
                                               unsigned threads) {
-  std::vector<StaticEvent> events;
-  if (scenery.empty() || traj.size() == 0) return events;
-  std::vector<Aabb> boxes;
-  boxes.reserve(scenery.size());
-  for (const StaticPolygon& p : scenery) boxes.push_back(polygon_box(p));
-  std::vector<std::vector<StaticEvent>> per_body(traj.size());
-  parallel_for(traj.size(), resolve_threads(threads), [&](std::size_t b, unsigned) {
-    append_body_static_events(traj, static_cast<std::uint32_t>(b), scenery, boxes, per_body[b]);
-  });
-  for (auto& v : per_body) events.insert(events.end(), v.begin(), v.end());
-  std::sort(events.begin(), events.end(), static_event_order);
-  return events;
+  TruthOptions options;
+  options.threads = threads;
+  const RigidMotion balls(traj);
+  return compute_truth(balls, scenery, options).static_events;
 }
 
 }  // namespace ccd

@@ -3,9 +3,9 @@
 // maximal closed time interval in [0, horizon] during which body i's sphere touches
 // polygon j (distance from the centre to the polygon <= radius). docs/scenery.md.
 //
-// Each body's trajectory pieces (walls, gravity, acceleration changes) are walked in
-// order; a piece whose centre box, grown by the radius and a rounding margin, overlaps a
-// polygon's box is solved exactly on the WHOLE piece by sphere_polygon_contacts
+// Over a candidate run [u0, u1] (ccd/truth/truth_candidates.hpp), the body's trajectory
+// pieces (walls, gravity, acceleration changes) are walked in order; a piece whose centre
+// box, grown by the radius and a rounding margin, overlaps a polygon's box is solved exactly on the WHOLE piece by sphere_polygon_contacts
 // (ccd/queries/sphere_polygon.hpp) with the piece's own expansion point, then clipped to
 // the requested window; intervals of consecutive pieces that meet at a break, or are
 // separated by no more than merge_gap(horizon) (ccd/truth/pair_contact.hpp), are merged,
@@ -44,14 +44,9 @@ bool static_event_order(const StaticEvent& x, const StaticEvent& y);
 void body_polygon_intervals(const Trajectories& traj, std::uint32_t body, const StaticPolygon& poly, double u0,
                             double u1, std::vector<ContactInterval>& out);
 
-/// The static events of one body over [0, horizon] against every polygon (boxes[j] =
-/// polygon_box(scenery[j]), ccd/broad_phase/static_index.hpp), appended in polygon order
-/// (unsorted across polygons). compute_static_truth is this per body, then sorted.
-void append_body_static_events(const Trajectories& traj, std::uint32_t body, std::span<const StaticPolygon> scenery,
-                               std::span<const Aabb> boxes, std::vector<StaticEvent>& out);
-
-/// Every static event of the scene over [0, horizon], sorted by static_event_order.
-/// threads 0: one per hardware core; the result does not depend on it.
+/// The static events of compute_truth (ccd/truth/truth.hpp) of `traj` as a motion of
+/// balls, sorted by static_event_order. threads 0: one per hardware core; the result does
+/// not depend on it.
 std::vector<StaticEvent> compute_static_truth(const Trajectories& traj, std::span<const StaticPolygon> scenery,
                                               unsigned threads = 0);
 

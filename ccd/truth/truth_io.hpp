@@ -27,6 +27,7 @@
 // the field (`events[3].exit`). Unknown fields are ignored.
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
+#include <ccd/truth/truth_options.hpp>
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -52,7 +53,9 @@ inline double largest_error(std::span<const EventError> errors) {
   return e;
 }
 
-struct TruthFile {
+/// The ground truth of a scene: what compute_truth (ccd/truth/truth.hpp) returns and a
+/// truth file holds (stats are not written: zero when read).
+struct Truth {
   double horizon = 0.0;
   std::vector<ContactEvent> events;  ///< sorted by (enter, a, b)
   /// SHA-256 of the canonical scene (ccd/scene/scene_digest.hpp); empty when unknown
@@ -67,7 +70,11 @@ struct TruthFile {
   /// One entry per static event, or empty when every static event is exact (spheres).
   std::vector<EventError> static_errors;
   int version = 2;  ///< the format version read (written files are version 2)
+  TruthStats stats;  ///< how it was computed (compute_truth); not part of the file
 };
+
+/// The same struct under its earlier name.
+using TruthFile = Truth;
 
 inline constexpr const char* kTruthFormat = "ccdlab-truth/2";
 inline constexpr const char* kTruthFormatV1 = "ccdlab-truth/1";

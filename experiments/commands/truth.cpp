@@ -10,14 +10,11 @@
 #include <ccd/scene/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <ccd/truth/ground_truth.hpp>
-#include <ccd/truth/rigid_static_truth.hpp>
-#include <ccd/truth/rigid_truth.hpp>
-#include <ccd/truth/static_truth.hpp>
+#include <ccd/motion/rigid_motion.hpp>
+#include <ccd/truth/truth.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/integer_text.hpp>
 
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -126,81 +123,34 @@ int run_truth(std::span<const std::string> args) {
     options.progress = [&progress](std::size_t solved, std::size_t total) {
       progress.advance("candidate pairs solved", solved, total);
     };
-    // Non-sphere shapes: the certified rigid truth (brackets and grazing flags); else exact.
-    ccd::TruthResult result;
-    std::vector<ccd::EventError> errors;
-    std::size_t grazing = 0;
-    if (scene.has_non_spheres()) {
-      const ccd::RigidMotion motion(scene, traj);
-      ccd::RigidTruthOptions ropts;
-      ropts.threads = options.threads;
-      ropts.windows = options.windows;
-      ccd::RigidTruthResult r = ccd::compute_rigid_truth(motion, ropts);
-      result.events = std::move(r.events);
-      errors = std::move(r.errors);
-      grazing = r.stats.grazing;
-      result.stats.windows = r.stats.windows;
-      result.stats.threads = r.stats.threads;
-      result.stats.candidate_runs = r.stats.candidate_runs;
-      result.stats.pairs_in_contact = r.stats.pairs_in_contact;
-    } else {
-      result = ccd::compute_truth_detailed(traj, options);
-    }
-    // Static scenery (docs/scenery.md): exact body-polygon events.
-    // Rigid bodies of other shapes: certified brackets, as their body-body events.
-    std::vector<ccd::StaticEvent> static_events;
-    std::vector<ccd::EventError> static_errors;
-    std::size_t static_grazing = 0;
-    if (!scene.scenery.empty()) {
-      doing = "computing the static events of " + std::to_string(scene.bodies.size()) + " bodies against " +
-              std::to_string(scene.scenery.size()) + " polygons";
-      if (scene.has_non_spheres()) {
-        const ccd::RigidMotion motion(scene, traj);
-        ccd::RigidTruthOptions ropts;
-        ropts.threads = options.threads;
-        ropts.windows = options.windows;
-        ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(motion, scene.scenery, ropts);
-        static_events = std::move(r.events);
-        static_errors = std::move(r.errors);
-        static_grazing = r.grazing;
-      } else {
-        static_events = ccd::compute_static_truth(traj, scene.scenery, options.threads);
-      }
-    }
+    if (!scene.scenery.empty())
+      doing += " and their static events against " + std::to_string(scene.scenery.size()) + " polygons";
+    // One call for every kind of scene (ccd/truth/truth.hpp): exact for spheres, certified
+    // brackets for other shapes, static events with scenery.
+    const ccd::RigidMotion motion(scene, traj);
+    ccd::Truth truth = ccd::compute_truth(motion, scene.scenery, options);
+    truth.scene_sha256 = ccd::scene_digest(scene);
     const auto done = std::chrono::steady_clock::now();
     auto secs = [](auto from, auto to) { return std::chrono::duration<double>(to - from).count(); };
     doing = "writing " + out_path;
-    if (output) {
-      ccd::TruthFile file;
-      file.horizon = scene.horizon;
-      file.events = result.events;
-      file.scene_sha256 = ccd::scene_digest(scene);
-      if (std::any_of(errors.begin(), errors.end(), [](const ccd::EventError& x) { return x != ccd::EventError{}; }))
-        file.errors = errors;
-      file.has_scenery = !scene.scenery.empty();
-      file.static_events = static_events;
-      if (std::any_of(static_errors.begin(), static_errors.end(),
-                      [](const ccd::EventError& x) { return x != ccd::EventError{}; }))
-        file.static_errors = static_errors;
-      output->commit(ccd::truth_to_text(file));
-    }
+    if (output) output->commit(ccd::truth_to_text(truth));
     if (quiet || out_path == "-") return 0;
     std::size_t tangent = 0;
-    for (const ccd::ContactEvent& e : result.events) tangent += e.enter == e.exit;
-    const ccd::TruthStats& st = result.stats;
+    for (const ccd::ContactEvent& e : truth.events) tangent += e.enter == e.exit;
+    const ccd::TruthStats& st = truth.stats;
     std::cout << "scene        " << scene_path << "\n"
               << "bodies       " << scene.bodies.size() << " (horizon " << scene.horizon << " s, motion "
               << ccd::to_string(scene.motion_kind()) << ", " << traj.total_pieces() << " trajectory pieces)\n"
-              << "events       " << result.events.size() << " (" << tangent << " tangent"
-              << (errors.empty() ? std::string() : ", " + std::to_string(grazing) + " grazing") << ")\n"
+              << "events       " << truth.events.size() << " (" << tangent << " tangent"
+              << (truth.errors.empty() ? std::string() : ", " + std::to_string(st.grazing) + " grazing") << ")\n"
               << "pairs        " << st.pairs_in_contact << " in contact; " << st.candidate_pair_windows
               << " candidate pair-windows in " << st.windows << " windows, " << st.candidate_runs
               << " solved exactly\n";
     if (!scene.scenery.empty()) {
       std::size_t static_tangent = 0;
-      for (const ccd::StaticEvent& e : static_events) static_tangent += e.enter == e.exit;
-      std::cout << "static       " << static_events.size() << " events (" << static_tangent << " tangent"
-                << (scene.has_non_spheres() ? ", " + std::to_string(static_grazing) + " grazing" : std::string())
+      for (const ccd::StaticEvent& e : truth.static_events) static_tangent += e.enter == e.exit;
+      std::cout << "static       " << truth.static_events.size() << " events (" << static_tangent << " tangent"
+                << (scene.has_non_spheres() ? ", " + std::to_string(st.static_grazing) + " grazing" : std::string())
                 << ") against "
                 << scene.scenery.size() << " polygons\n";
     }

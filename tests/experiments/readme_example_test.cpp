@@ -12,13 +12,13 @@
 #include <ccd/motion/state_cursor.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <ccd/truth/ground_truth.hpp>
+#include <ccd/truth/truth.hpp>
 #include <iostream>
 
 int main() {
   const ccd::Scene scene = ccd::load_scene(CCDLAB_SOURCE_DIR "/data/scenes/default.json");
   const ccd::Trajectories motion(scene);                  // exact: wall reflections solved
-  const auto events = ccd::compute_truth(motion);         // every contact interval
+  const ccd::Truth truth = ccd::compute_truth(ccd::RigidMotion(scene, motion), scene.scenery);  // every contact
   const ccd::BoundSpec capsule = ccd::parse_bound("capsule");  // a conservative space-time bound
   ccd::StepPipeline pipeline(capsule.make(), capsule.info->knowledge,
                              ccd::find_broad_phase("grid").make());  // culls with the bound's boxes
@@ -29,7 +29,7 @@ int main() {
   pipeline.run({t0, t1, start, &motion, 0.0, scene.box}, motion, step);
   for (const ccd::PairContact& c : step.contacts)
     std::cout << c.pair.a << " and " << c.pair.b << " touch at t = " << c.contact.toi << "\n";
-  std::cout << events.size() << " contact events in " << scene.horizon << " s\n";
+  std::cout << truth.events.size() << " contact events in " << scene.horizon << " s\n";
   return 0;
 }
 // ---- README example ends ----

@@ -59,7 +59,10 @@ TEST_CASE("compute_truth equals the all-pairs reference on random scenes", "[tru
       for (unsigned threads : {1u, 3u}) {
         for (std::size_t windows : {std::size_t{0}, std::size_t{7}, std::size_t{40}}) {
           INFO("threads " << threads << ", windows " << windows);
-          const auto got = ccd::compute_truth(t, {threads, windows, {}});
+          ccd::TruthOptions options;
+          options.threads = threads;
+          options.windows = windows;
+          const auto got = ccd::compute_truth(t, options);
           REQUIRE(got == ref);  // bit for bit: the pair solve does not depend on the window
         }
       }
