@@ -87,6 +87,12 @@ def main(argv):
     except BadInput as e:
         print(f"ccdlab animate: {e}", file=sys.stderr)
         return 2
+    except MemoryError:  # the same one line as the other commands' out-of-memory handler
+        print(f"ccdlab animate: out of memory while animating {args.scene}", file=sys.stderr)
+        return 1
+    except OSError as e:  # a full disk or an unwritable output while writing the animation
+        print(f"ccdlab animate: {args.output}: {e.strerror or e}", file=sys.stderr)
+        return 1
 
 
 def animate(args):
