@@ -35,7 +35,8 @@ ClothExperiment cloth_experiment_from_json(const json& j, const std::string& fil
     if (!e.scene_path.empty()) r.fail("n", "applies to a built-in scene only (a scene file sets its grid)");
     e.n = static_cast<int>(r.integer(j["n"], "n", 4, 1000));
   }
-  if (j.contains("steps")) e.steps = static_cast<int>(r.integer(j["steps"], "steps", 1, 1000000));
+  if (j.contains("steps") && !j["steps"].is_null())  // null: the scene's own steps (as written back)
+    e.steps = static_cast<int>(r.integer(j["steps"], "steps", 1, 1000000));
   if (j.contains("thickness") && !j["thickness"].is_null()) {
     e.thickness = r.number(j["thickness"], "thickness");
     if (e.thickness < 0.0 || e.thickness > 1e30) r.fail("thickness", "must be a number in [0, 1e+30]");

@@ -42,6 +42,14 @@ TEST_CASE("cloth experiment: defaults, and every bad field named", "[cloth][expe
   CHECK(back["cullers"].size() == e.cullers.size());
   CHECK(back["repeats"] == 1);
   CHECK(ccdlab::cloth_experiment_from_json(back, "e.json").k == e.k);  // what the results record parses again
+  {  // without steps (the scene's own), the record writes "steps": null: it parses again
+    json no_steps = small();
+    no_steps.erase("steps");
+    const ccdlab::ClothExperiment d = ccdlab::cloth_experiment_from_json(no_steps, "e.json");
+    const json written = ccdlab::cloth_experiment_to_json(d);
+    CHECK(written["steps"].is_null());
+    CHECK(ccdlab::cloth_experiment_from_json(written, "e.json").steps == d.steps);
+  }
 
   auto with = [](const char* key, const json& v) {
     json j = small();
