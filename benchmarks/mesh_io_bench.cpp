@@ -58,12 +58,12 @@ Folder& folder() {
   return f;
 }
 
-void read(benchmark::State& state, std::string path) {
+void read_bench(benchmark::State& state, std::string path) {
   for (auto _ : state) benchmark::DoNotOptimize(ccd::cloth::read_mesh(path));
   state.SetBytesProcessed(static_cast<std::int64_t>(state.iterations()) * static_cast<std::int64_t>(std::filesystem::file_size(path)));
 }
 
-void write(benchmark::State& state, const TriangleMesh* mesh, std::string path) {
+void write_bench(benchmark::State& state, const TriangleMesh* mesh, std::string path) {
   for (auto _ : state) ccd::cloth::write_ply(path, *mesh);
 }
 
@@ -93,11 +93,11 @@ int main(int argc, char** argv) {
     for (const auto& [name, encoding] : plys) {
       const std::string path = base + "-" + name + ".ply";
       ccd::cloth::write_ply(path, mesh, encoding);
-      benchmark::RegisterBenchmark(("read_mesh/" + name + "/" + tag).c_str(), read, path)->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("read_mesh/" + name + "/" + tag).c_str(), read_bench, path)->Unit(benchmark::kMillisecond);
     }
     ccd::cloth::write_obj(base + ".obj", mesh);
-    benchmark::RegisterBenchmark(("read_mesh/obj/" + tag).c_str(), read, base + ".obj")->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("write_ply/binary_le_double/" + tag).c_str(), write, &mesh, base + "-written.ply")
+    benchmark::RegisterBenchmark(("read_mesh/obj/" + tag).c_str(), read_bench, base + ".obj")->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("write_ply/binary_le_double/" + tag).c_str(), write_bench, &mesh, base + "-written.ply")
         ->Unit(benchmark::kMillisecond);
     std::fprintf(stderr, "grid of %zu vertices, %zu faces\n", mesh.vertices.size(), mesh.faces.size());
   }
