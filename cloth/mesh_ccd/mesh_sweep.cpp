@@ -88,37 +88,32 @@ Halves make_halves(const Aabb& early, const Aabb& late, int ax) {
   return h;
 }
 
-// One set of primitives (vertices, faces or edges), unsorted, then sorted by (lo, id).
+// One set of primitives (vertices, faces or edges): the sort keys (start on the sweep
+// axis, index), sorted, then the items and half-interval boxes built in sorted order.
 struct PrimitiveSet {
-  std::vector<Item> items;
-  std::vector<Halves> halves;
   std::vector<std::pair<double, std::uint32_t>> keys;
 
-  // fill(i) -> (whole, early, late, vertices) of primitive i.
-  template <class Fill>
-  void build(std::size_t count, bool with_halves, unsigned threads, Fill&& fill) {
-    items.resize(count);
-    if (with_halves) halves.resize(count);
+  // lo(i): primitive i's start on the sweep axis.
+  template <class Lo>
+  void sort_keys(std::size_t count, unsigned threads, Lo&& lo) {
     keys.resize(count);
     parallel_for((count + kBuildBlock - 1) / kBuildBlock, threads, [&](std::size_t block, unsigned) {
       const std::size_t end = std::min(count, (block + 1) * kBuildBlock);
-      for (std::size_t i = block * kBuildBlock; i < end; ++i) {
-        fill(i, items[i], with_halves ? &halves[i] : nullptr);
-        keys[i] = {items[i].lo, items[i].id};
-      }
+      for (std::size_t i = block * kBuildBlock; i < end; ++i) keys[i] = {lo(i), static_cast<std::uint32_t>(i)};
     });
   }
-  void sort_keys() { std::sort(keys.begin(), keys.end()); }
-  void gather(std::vector<Item>& sorted, std::vector<Halves>& sorted_halves, unsigned threads) const {
-    const std::size_t n = items.size();
-    sorted.resize(n);
-    sorted_halves.resize(halves.empty() ? 0 : n);
+  void sort() { std::sort(keys.begin(), keys.end()); }
+  // fill(i, item, halves or nullptr) builds primitive i.
+  template <class Fill>
+  void build(std::vector<Item>& items, std::vector<Halves>& halves, bool with_halves, unsigned threads,
+             Fill&& fill) const {
+    const std::size_t n = keys.size();
+    items.resize(n);
+    halves.resize(with_halves ? n : 0);
     parallel_for((n + kBuildBlock - 1) / kBuildBlock, threads, [&](std::size_t block, unsigned) {
       const std::size_t end = std::min(n, (block + 1) * kBuildBlock);
-      for (std::size_t k = block * kBuildBlock; k < end; ++k) {
-        sorted[k] = items[keys[k].second];
-        if (!halves.empty()) sorted_halves[k] = halves[keys[k].second];
-      }
+      for (std::size_t k = block * kBuildBlock; k < end; ++k)
+        fill(keys[k].second, items[k], with_halves ? &halves[k] : nullptr);
     });
   }
 };
@@ -165,25 +160,30 @@ void MeshSweep::prepare(const ClothMesh& mesh, std::span<const Vec3> x0, std::sp
   const bool h = time_halves_;
 
   PrimitiveSet sets[3];  // vertices, faces, edges
-  sets[0].build(x0.size(), h, threads, [&](std::size_t i, Item& item, Halves* halves) {
-    const auto id = static_cast<std::uint32_t>(i);
-    item = make_item(vb.whole[i], ax, id, {id, id, id});
+  sets[0].sort_keys(x0.size(), threads, [&](std::size_t i) { return vb.whole[i].lo[ax]; });
+  sets[1].sort_keys(mesh.triangles.size(), threads, [&](std::size_t i) {
+    const auto& t = mesh.triangles[i];
+    return std::min({vb.whole[t[0]].lo[ax], vb.whole[t[1]].lo[ax], vb.whole[t[2]].lo[ax]});
+  });
+  sets[2].sort_keys(mesh.edges.size(), threads, [&](std::size_t i) {
+    const auto& e = mesh.edges[i];
+    return std::min(vb.whole[e[0]].lo[ax], vb.whole[e[1]].lo[ax]);
+  });
+  parallel_for(3, threads, [&](std::size_t s, unsigned) { sets[s].sort(); });
+  sets[0].build(vertices_, vertex_halves_, h, threads, [&](std::uint32_t i, Item& item, Halves* halves) {
+    item = make_item(vb.whole[i], ax, i, {i, i, i});
     if (halves) *halves = make_halves(vb.early[i], vb.late[i], ax);
   });
-  sets[1].build(mesh.triangles.size(), h, threads, [&](std::size_t i, Item& item, Halves* halves) {
+  sets[1].build(faces_, face_halves_, h, threads, [&](std::uint32_t i, Item& item, Halves* halves) {
     const auto& t = mesh.triangles[i];
-    item = make_item(union_box<3>(vb.whole, t), ax, static_cast<std::uint32_t>(i), t);
+    item = make_item(union_box<3>(vb.whole, t), ax, i, t);
     if (halves) *halves = make_halves(union_box<3>(vb.early, t), union_box<3>(vb.late, t), ax);
   });
-  sets[2].build(mesh.edges.size(), h, threads, [&](std::size_t i, Item& item, Halves* halves) {
+  sets[2].build(edges_, edge_halves_, h, threads, [&](std::uint32_t i, Item& item, Halves* halves) {
     const auto& e = mesh.edges[i];
-    item = make_item(union_box<2>(vb.whole, e), ax, static_cast<std::uint32_t>(i), {e[0], e[1], e[1]});
+    item = make_item(union_box<2>(vb.whole, e), ax, i, {e[0], e[1], e[1]});
     if (halves) *halves = make_halves(union_box<2>(vb.early, e), union_box<2>(vb.late, e), ax);
   });
-  parallel_for(3, threads, [&](std::size_t s, unsigned) { sets[s].sort_keys(); });
-  sets[0].gather(vertices_, vertex_halves_, threads);
-  sets[1].gather(faces_, face_halves_, threads);
-  sets[2].gather(edges_, edge_halves_, threads);
   auto chunks_of = [](std::size_t n) { return (n + kChunk - 1) / kChunk; };
   edge_chunks_ = chunks_of(edges_.size());
   face_chunks_ = chunks_of(faces_.size());
