@@ -15,7 +15,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene scene_binary experiment truth results merge)
+[ ${#targets[@]} -gt 0 ] || targets=(scene scene_binary experiment truth results merge mesh_ply mesh_obj)
 build=${CCDLAB_FUZZ_BUILD_DIR:-$root/build-fuzz}
 
 command -v clang++ >/dev/null || "$root/scripts/install-deps.sh" clang libclang-rt-dev

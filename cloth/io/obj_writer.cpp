@@ -1,0 +1,48 @@
+#include "obj_writer.hpp"
+
+#include <cloth/io/mesh_check.hpp>
+
+#include <ccd/io/atomic_file.hpp>
+
+#include <array>
+#include <charconv>
+
+namespace ccd::cloth {
+
+namespace {
+
+template <class T>
+void append_number(std::string& out, T v) {
+  std::array<char, 32> buf{};
+  const auto [ptr, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  (void)ec;  // 32 bytes hold every shortest double and 64-bit integer
+  out.append(buf.data(), ptr);
+}
+
+}  // namespace
+
+std::string format_obj(const TriangleMesh& mesh) {
+  check_mesh_for_writing(mesh, false, "OBJ writer");
+  std::string out = "# written by ccdlab\n";
+  for (const Vec3& v : mesh.vertices) {
+    out += 'v';
+    for (int k = 0; k < 3; ++k) {
+      out += ' ';
+      append_number(out, v[k]);
+    }
+    out += '\n';
+  }
+  for (const auto& f : mesh.faces) {
+    out += 'f';
+    for (std::uint32_t i : f) {
+      out += ' ';
+      append_number(out, std::uint64_t{i} + 1);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void write_obj(const std::string& path, const TriangleMesh& mesh) { write_file_atomically(path, format_obj(mesh)); }
+
+}  // namespace ccd::cloth
