@@ -90,7 +90,9 @@ void validate_results(const json& j, const std::string& file) {
   const json& format = r.require(j, "format", "");
   if (!format.is_string() || format.get<std::string>() != "ccdlab-results/2")
     r.fail("format", "must be \"ccdlab-results/2\"");
-  const Experiment e = stored_experiment(r.require(j, "experiment", ""), r);
+  const json& experiment = r.require(j, "experiment", "");
+  if (!experiment.is_object()) r.fail("experiment", "must be an object");
+  const Experiment e = stored_experiment(experiment, r);
   const json& scene = r.require(j, "scene", "");
   check_scene_summary(scene, r);
   try {

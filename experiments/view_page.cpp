@@ -9,12 +9,27 @@
 namespace ccdlab {
 
 std::string json_for_script(const nlohmann::json& data) {
+  // In JSON these characters occur only inside strings, where \uXXXX means the same: the
+  // HTML parser then never sees "</script", "<!--" (its script-data escape states) or a
+  // character reference, and JavaScript never sees a line terminator inside a string.
   const std::string text = data.dump();
   std::string out;
   out.reserve(text.size() + 16);
   for (std::size_t i = 0; i < text.size(); ++i) {
-    out += text[i];
-    if (text[i] == '<' && i + 1 < text.size() && text[i + 1] == '/') out += '\\';
+    const char c = text[i];
+    if (c == '<') {
+      out += "\\u003c";
+    } else if (c == '>') {
+      out += "\\u003e";
+    } else if (c == '&') {
+      out += "\\u0026";
+    } else if (c == '\xE2' && i + 2 < text.size() && text[i + 1] == '\x80' &&
+               (text[i + 2] == '\xA8' || text[i + 2] == '\xA9')) {  // U+2028, U+2029 in UTF-8
+      out += text[i + 2] == '\xA8' ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += c;
+    }
   }
   return out;
 }

@@ -12,7 +12,8 @@ namespace ccdlab {
 /// The whole page for `data` (body_view_data or cloth_view_data).
 std::string view_page(const nlohmann::json& data);
 
-/// `data` as JSON text safe inside an HTML <script> element ("</" written as "<\/").
+/// `data` as JSON text safe inside an HTML <script> element: every `<`, `>` and `&` and the
+/// line terminators U+2028 and U+2029 written as \uXXXX escapes (the same JSON value).
 std::string json_for_script(const nlohmann::json& data);
 
 }  // namespace ccdlab

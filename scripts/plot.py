@@ -18,13 +18,12 @@ what small runs are compared by on a loaded machine). Timestep axes also show th
 Reads results only; exits with status 2 on a file that is not a results file.
 """
 import argparse
-import json
 import os
 import sys
 
 import matplotlib
 import numpy as np
-from results_json import by_method
+from results_json import BadInput, by_method, read_results, shown
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -48,19 +47,32 @@ def fail(msg):
 
 def load(path):
     try:
-        with open(path) as f:
-            res = json.load(f)
-    except (OSError, json.JSONDecodeError) as e:
-        fail(f"{path}: {e}")
-    if not isinstance(res, dict) or res.get("format") != "ccdlab-results/2":
-        fail(f"{path}: format: not a ccdlab-results/2 file")
-    for i, r in enumerate(res.get("records", [])):
+        res = read_results(path)
+    except BadInput as e:
+        fail(str(e))
+    records = res.get("records")
+    if not isinstance(records, list) or not records:
+        fail(f"{shown(path)}: records: no records to plot")
+    for key in ("experiment", "scene", "truth"):
+        if not isinstance(res.get(key), dict):
+            fail(f"{shown(path)}: {key}: must be an object")
+    for i, r in enumerate(records):
+        if not isinstance(r, dict):
+            fail(f"{shown(path)}: records[{i}]: must be an object")
         for k in ("method", "dt", "missed_fraction", "false_positives_per_step",
                   "seconds_per_simulated_second", "continuous", "max_penetration"):
             if k not in r:
-                fail(f"{path}: records[{i}].{k}: missing field")
-    if not res.get("records"):
-        fail(f"{path}: records: no records to plot")
+                fail(f"{shown(path)}: records[{i}].{k}: missing field")
+        if not isinstance(r["method"], str):
+            fail(f"{shown(path)}: records[{i}].method: must be a string")
+        r["method"] = r["method"].replace("$", r"\$")  # a label, not matplotlib's mathtext
+        for k in ("dt", "missed_fraction", "false_positives_per_step", "seconds_per_simulated_second",
+                  "max_penetration"):  # drawn on log axes: limits and ticks must fit a double
+            v = r[k]
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not (v == 0 or 1e-300 <= abs(v) <= 1e300):
+                fail(f"{shown(path)}: records[{i}].{k}: must be 0 or a number of magnitude in [1e-300, 1e300]")
+        if r["dt"] <= 0:
+            fail(f"{shown(path)}: records[{i}].dt: must be > 0")
     return res
 
 
@@ -103,17 +115,45 @@ def line_chart(res, outdir, formats, stem, key, ylabel, methods=None, yscale="sy
         rs = groups[name]
         ax.plot([r["dt"] for r in rs], [key(r) for r in rs], label=name, linewidth=1.4,
                 markersize=4, **style(i))
-    ax.set_xscale("log")
-    if yscale == "symlog":
-        ys = [key(r) for r in res["records"] if key(r) > 0]
-        ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
-        ax.set_ylim(bottom=0)
-    else:
-        ax.set_yscale(yscale)
+    log_axis(ax, "x", [r["dt"] for r in res["records"]])
+    y_axis(ax, [key(r) for r in res["records"] if methods is None or r["method"] in methods], yscale)
     ax.set_xlabel("timestep dt (s)")
     ax.set_ylabel(ylabel)
     hz_axis(ax)
     return finish(fig, ax, res, outdir, stem, formats)
+
+
+def log_limits(values):
+    """Limits of a log axis around the values > 0 (a factor 2 beyond each end, so that a
+    single value sits mid-axis); None when no value is > 0."""
+    positive = [v for v in values if v > 0]
+    return (min(positive) / 2, max(positive) * 2) if positive else None
+
+
+def log_axis(ax, which, values):
+    """A log axis around `values` (every one > 0), its limits set here: matplotlib's own
+    margins collapse on a single value."""
+    limits = log_limits(values)
+    (ax.set_xscale if which == "x" else ax.set_yscale)("log")
+    if limits:
+        (ax.set_xlim if which == "x" else ax.set_ylim)(*limits)
+
+
+def y_axis(ax, ys, yscale):
+    """The value axis: "symlog" (0 at the bottom, a log scale above the smallest value > 0)
+    or "log" (values <= 0 not drawn); linear from 0 with a note when no value is > 0, as
+    when nothing was missed, nothing was a false positive or every cost is 0."""
+    limits = log_limits(ys)
+    if limits is None:
+        ax.set_ylim(-0.05, 1.0)
+        ax.text(0.5, 0.5, "every value is 0", transform=ax.transAxes, ha="center", va="center", fontsize=12,
+                color="gray")
+    elif yscale == "symlog":
+        ax.set_yscale("symlog", linthresh=limits[0] * 2)
+        ax.set_ylim(0, limits[1])
+    else:
+        ax.set_yscale(yscale)
+        ax.set_ylim(*limits)
 
 
 def hz_axis(ax):
@@ -157,10 +197,9 @@ def speed_accuracy(res, outdir, formats):
     front = pareto(pts)
     ax.plot([p[0] for p in front], [p[1] for p in front], color="black", linewidth=1.0,
             linestyle="--", label="Pareto front", zorder=2)
-    ax.set_xscale("log")
-    ys = [p[1] for p in pts if p[1] > 0]
-    ax.set_yscale("symlog", linthresh=min(ys) if ys else 1e-6)
-    ax.set_ylim(bottom=0)
+    if log_limits([p[0] for p in pts]):
+        log_axis(ax, "x", [p[0] for p in pts])
+    y_axis(ax, [p[1] for p in pts], "symlog")
     ax.set_xlabel(f"cost ({cost_label})")
     ax.set_ylabel("missed fraction of contact events")
     ax.legend(fontsize=7, loc="upper right", frameon=True, framealpha=0.85,
@@ -177,7 +216,7 @@ def zero_miss_panel(ax, groups):
         best = min(zero, key=cost_of) if zero else None
         rows.append((cost_of(best) if best else float("inf"), name, i, best))
     rows.sort(key=lambda row: (row[0], row[1]))
-    finite = [row[0] for row in rows if row[0] != float("inf")]
+    finite = [row[0] for row in rows if row[0] != float("inf") and row[0] > 0]
     for y, (cost, name, i, best) in enumerate(rows):
         if best is None:
             ax.text(0.01, y, "misses at every dt", transform=ax.get_yaxis_transform(), va="center",
@@ -188,7 +227,7 @@ def zero_miss_panel(ax, groups):
     ax.set_yticks(range(len(rows)))
     ax.set_yticklabels([row[1] for row in rows], fontsize=8)
     ax.invert_yaxis()
-    if finite:
+    if finite and len(finite) == sum(row[0] != float("inf") for row in rows):  # a log axis: every cost > 0
         ax.set_xscale("log")
         ax.set_xlim(min(finite) / 3, max(finite) * 30)
     ax.set_xlabel("cost at the cheapest zero-miss dt (" + ("CPU " if cost_field.startswith("cpu") else "")

@@ -60,6 +60,13 @@ def save(fig, outdir, stem, formats):
     return paths
 
 
+def log_y(ax):
+    """A log value axis over the lines `ax` draws; linear with a note when none of their
+    values is > 0 (plot.y_axis): an all-zero series has nothing to show on a log scale."""
+    ys = [float(y) for line in ax.get_lines() for y in line.get_ydata() if y is not None and float(y) == float(y)]
+    plot.y_axis(ax, ys, "log")
+
+
 def legend(ax, **kw):
     ax.legend(fontsize=8, frameon=False, **kw)
 
@@ -196,7 +203,7 @@ def sap_coherence(results, outdir, formats):
             out.append(f"| {n} | {fmt_dt(d)} | {steps} | " + " | ".join(cells) + " |")
     for ax in axes:
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("timestep dt (s)")
         ax.grid(True, which="both", alpha=0.3)
     what = {"sap": "endpoint swaps, 3 axes", "sweep": "start swaps, 1 axis"}
@@ -323,7 +330,7 @@ def grazing(results, outdir, formats):
         ax.axhline(t["events"], color="black", linewidth=1)
         ax.axhline(t["tangent_events"], color="gray", linestyle=":", linewidth=1)
         ax.set_xscale("log", base=2 if "dyadic" in name else 10)
-        ax.set_ylim(bottom=0, top=t["events"] * 1.08)
+        ax.set_ylim(bottom=0, top=max(1, t["events"]) * 1.08)  # 1 when the truth has no event
         ax.set_xlabel("timestep dt (s)")
         ax.set_ylabel("events detected")
         ax.set_title(f"{name}: {t['events']} events (black), {t['tangent_events']} tangent (dotted)",
@@ -487,7 +494,7 @@ def scheduling(results, outdir, formats):
             ax.plot([r["dt"] for r in rs], [cpu_cost(r) for r in rs], label=m,
                     linestyle="-" if sched_m else "--", linewidth=1.3, markersize=4, **plot.style(i % 4))
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("dt: step (fixed) or longest window (@earliest), s")
         ax.set_ylabel("CPU seconds per simulated second")
         ax.set_title(f"{name}: {res['truth']['events']} events", fontsize=10)
@@ -539,7 +546,7 @@ def time_against(results, outdir, formats, stem, xkey, xlabel, title):
                 ax.plot([x for x, _ in pts], [per_step(r, "broad_seconds") * 1e3 for _, r in pts], label=m,
                         **plot.style(i))
         ax.set_xscale("log")
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel(xlabel)
         ax.set_ylabel("broad-phase ms per step")
         ax.set_title(f"dt = {fmt_dt(d)} s", fontsize=10)
@@ -586,7 +593,7 @@ def fit(results, outdir, formats):
                                     for n in method_order(results))
                        + f" | {', '.join(map(str, disc))} | {', '.join(map(str, cont))} |")
         ax.set_xscale("log", base=2)
-        ax.set_yscale("log")
+        log_y(ax)
         ax.set_xlabel("elongation (largest / smallest half extent)")
         ax.set_ylabel("false positives per step")
         ax.set_title(f"{g}: {rs_g[0]['scene']['bodies']} bodies; dashed: discrete", fontsize=10)
@@ -614,7 +621,7 @@ def load_cloth(path):
     if not res.get("records"):
         fail(f"{path}: records: no records to plot")
     for i, r in enumerate(res["records"]):
-        for k in ("method", "mode", "culler", "k", "missed", "events", "candidates", "false_positives",
+        for k in ("method", "mode", "culler", "k", "dt", "missed", "events", "candidates", "false_positives",
                   "checks", "seconds_per_simulated_second", "conservative"):
             if k not in r:
                 fail(f"{path}: records[{i}].{k}: missing field")
@@ -651,7 +658,8 @@ def cloth(results, outdir, formats):
                 if k in by_k else "" for k in ks) + " |")
             for row, (key, label, scale) in enumerate(rows):
                 ax = axes[row][col]
-                ys = [r["false_positives"] / r["checks"] if key == "fp_per_check" else r[key] for r in rs]
+                ys = [(r["false_positives"] / r["checks"] if r["checks"] else 0.0) if key == "fp_per_check" else r[key]
+                      for r in rs]
                 ax.plot([r["k"] for r in rs], ys, label=m, linewidth=1.3, markersize=4,
                         linestyle="-" if rs[0]["mode"] == "continuous" else "--", **plot.style(i))
         for row, (key, label, scale) in enumerate(rows):
@@ -661,7 +669,7 @@ def cloth(results, outdir, formats):
                 ax.set_yscale("symlog", linthresh=1)
                 ax.set_ylim(bottom=0)
             else:
-                ax.set_yscale("log")
+                log_y(ax)
             ax.set_xlabel("check interval k (integrator steps)")
             ax.set_ylabel(label)
             ax.grid(True, which="both", alpha=0.3)
@@ -730,6 +738,24 @@ def thin_obstacles(results, outdir, formats):
     return out, save(fig, outdir, "thin-obstacles-missed", formats)
 
 
+def check_study_inputs(study, paths, results):
+    """What a study reads beyond the records, checked per file (exit 2 naming it)."""
+    for p, res in zip(paths, results):
+        src = source(res)
+        if study == "fit" and (isinstance(src.get("elongation"), bool)
+                               or not isinstance(src.get("elongation"), (int, float))):
+            fail(f"{plot.shown(p)}: scene.source.elongation: missing (the fit study draws generated scenes "
+                 "against their elongation)")
+        if study == "bound-violation":
+            true_max = src.get("max_acceleration", res["scene"].get("max_acceleration"))
+            if isinstance(true_max, bool) or not isinstance(true_max, (int, float)) or not true_max > 0:
+                fail(f"{plot.shown(p)}: scene.max_acceleration: must be > 0 (the bound-violation study divides "
+                     "the bound used by it)")
+            used = res["experiment"].get("acceleration_bound_used")
+            if isinstance(used, bool) or not isinstance(used, (int, float)):
+                fail(f"{plot.shown(p)}: experiment.acceleration_bound_used: missing")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description="Charts of one stability study (docs/studies.md).")
     ap.add_argument("study", choices=STUDIES)
@@ -759,6 +785,7 @@ def main(argv=None):
             for k in ("steps", "missed", "detected", "broad_seconds", "candidates", "self_check"):
                 if k not in r:
                     fail(f"{p}: records[{i}].{k}: missing field")
+    check_study_inputs(args.study, args.results, results)
     os.makedirs(outdir, exist_ok=True)
     s = args.study
     if s == "tunnelling":

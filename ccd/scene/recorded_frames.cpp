@@ -164,6 +164,21 @@ Vec3 angular_velocity(const Eigen::Quaterniond& from, const Eigen::Quaterniond& 
   return axis * (angle / (n * s));
 }
 
+// Where a body's frames, in file order, first go back in time: that frame and the one
+// before it; nullopt when they never do. Rows may come in any order, so this is no error
+// in itself; it is what to point at when the body's frames do not reach the file's first
+// or last time (in a file written in time order, the line where t went wrong).
+struct Backwards {
+  const Frame* here;
+  const Frame* before;
+};
+std::optional<Backwards> first_backwards(const std::vector<Frame>& frames_in_file_order) {
+  for (std::size_t k = 1; k < frames_in_file_order.size(); ++k)
+    if (frames_in_file_order[k].t < frames_in_file_order[k - 1].t)
+      return Backwards{&frames_in_file_order[k], &frames_in_file_order[k - 1]};
+  return std::nullopt;
+}
+
 [[noreturn]] void fail_at(const std::string& file, std::size_t line, const std::string& column, const std::string& what) {
   throw InputError(file, "line " + std::to_string(line) + (column.empty() ? "" : ": " + column), what);
 }
@@ -321,6 +336,20 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
 
   for (const std::string& label : order) {
     Track& tr = tracks[label];
+    std::optional<Frame> back_here, back_before;  // copies: the frames are sorted below
+    if (const auto back = first_backwards(tr.frames)) {
+      back_here = *back->here;
+      back_before = *back->before;
+    }
+    // A body whose frames miss the file's first or last time: named at the line where its
+    // time goes backwards, if it does, else at its first (last) frame.
+    auto fail_span = [&](std::size_t line, const std::string& what) {
+      if (back_here)
+        fail(back_here->line, "t", "body " + in_quotes(label) + " goes backwards here (t = " +
+                                       std::to_string(back_here->t) + " after t = " + std::to_string(back_before->t) +
+                                       " on line " + std::to_string(back_before->line) + "), so it " + what);
+      fail(line, "t", "body " + in_quotes(label) + " " + what);
+    };
     std::sort(tr.frames.begin(), tr.frames.end(), [](const Frame& a, const Frame& b) {
       return a.t < b.t || (a.t == b.t && a.line < b.line);
     });
@@ -331,13 +360,13 @@ FrameImport import_frames(std::istream& csv, const std::string& file, const Fram
                  std::to_string(std::min(tr.frames[k].line, tr.frames[k - 1].line)) + " and " +
                  std::to_string(std::max(tr.frames[k].line, tr.frames[k - 1].line)) + ")");
     if (tr.frames.front().t != t_min)
-      fail(tr.frames.front().line, "t", "body " + in_quotes(label) + " starts at t = " + std::to_string(tr.frames.front().t) +
-                                            ", after the file's first time " + std::to_string(t_min) +
-                                            " (every body needs a frame at the first and the last time)");
+      fail_span(tr.frames.front().line, "starts at t = " + std::to_string(tr.frames.front().t) +
+                    ", after the file's first time " + std::to_string(t_min) +
+                    " (every body needs a frame at the first and the last time)");
     if (tr.frames.back().t != t_max)
-      fail(tr.frames.back().line, "t", "body " + in_quotes(label) + " ends at t = " + std::to_string(tr.frames.back().t) +
-                                           ", before the file's last time " + std::to_string(t_max) +
-                                           " (every body needs a frame at the first and the last time)");
+      fail_span(tr.frames.back().line, "ends at t = " + std::to_string(tr.frames.back().t) +
+                    ", before the file's last time " + std::to_string(t_max) +
+                    " (every body needs a frame at the first and the last time)");
     // Scene times; the velocity of each interval from the model's own position at its start.
     std::vector<double> tau(tr.frames.size());
     for (std::size_t k = 0; k < tau.size(); ++k) tau[k] = tr.frames[k].t - t_min;

@@ -33,7 +33,8 @@
 // column, a row with the wrong number of cells, a cell that is not a finite number, a
 // body's second frame at the same time, a radius <= 0 or changing within a body, a
 // changing shape, an unknown shape, a quaternion further than 1e-6 from unit length, a
-// body without a frame at the first or the last time, fewer than two distinct times.
+// body without a frame at the first or the last time (named at the first line where the
+// body's time goes backwards, if it does), fewer than two distinct times.
 // The resulting scene is validated as any scene (ccd/scene/scene_io.hpp).
 #include <ccd/scene/scene.hpp>
 

@@ -143,6 +143,9 @@ TEST_CASE("merge validates every field of every shard and names file and field",
   SECTION("an experiment that is not one") {
     first["experiment"]["methods"] = {"aabb/octree", "capsule/grid"};
     CHECK(merge_error(s.shards).rfind(s1 + ": experiment.methods[0]: unknown broad phase", 0) == 0);
+    // Once a JSON type error (exit 1, no field) from erasing a key of an array.
+    first["experiment"] = {1, 2};
+    CHECK(merge_error(s.shards) == s1 + ": experiment: must be an object");
   }
   SECTION("the shard itself") {
     first["shard"]["index"] = 4;

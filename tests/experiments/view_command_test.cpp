@@ -96,9 +96,25 @@ TEST_CASE("view page: one file, every marker filled, no early end of a script", 
   CHECK(page.find("REVISION") != std::string::npos);        // three.js itself
   CHECK(page.find("OrbitControls") != std::string::npos);
   CHECK(page.find("data-missed") != std::string::npos);     // the page's script
-  CHECK(page.find("odd<\\/script><b>name") != std::string::npos);
+  CHECK(page.find("odd\\u003c/script\\u003e\\u003cb\\u003ename") != std::string::npos);
   CHECK(page.find("odd</script>") == std::string::npos);
-  CHECK(ccdlab::json_for_script(json("a</b")) == "\"a<\\/b\"");
+}
+
+TEST_CASE("view page: JSON in the script element escapes what the HTML parser or JavaScript reads", "[view]") {
+  // "<!--<script>" alone (no "</script>") sends the HTML parser into its script-data escape
+  // states, where the element's real end tag no longer ends it: the page stays 'loading'.
+  CHECK(ccdlab::json_for_script(json("a</b")) == "\"a\\u003c/b\"");
+  CHECK(ccdlab::json_for_script(json("<!--<script>")) == "\"\\u003c!--\\u003cscript\\u003e\"");
+  CHECK(ccdlab::json_for_script(json("<img src=x onerror=f()>&amp;")) ==
+        "\"\\u003cimg src=x onerror=f()\\u003e\\u0026amp;\"");
+  // U+2028 and U+2029 (line terminators in older JavaScript), as escapes; other UTF-8 as is.
+  CHECK(ccdlab::json_for_script(json("x\u2028y\u2029z\u00e9\u20ac")) == "\"x\\u2028y\\u2029z\u00e9\u20ac\"");
+  // The same value: the escapes parse back to the original strings, keys included.
+  const json nested{{"k<>&\u2028", {"</script>", "<!--", 1.5, nullptr}}};
+  const std::string text = ccdlab::json_for_script(nested);
+  CHECK(text.find_first_of("<>&") == std::string::npos);
+  CHECK(text.find("\u2028") == std::string::npos);
+  CHECK(json::parse(text) == nested);
 }
 
 TEST_CASE("ccdlab view: writes the page with the results' missed contacts", "[view][cli]") {

@@ -32,6 +32,7 @@ def with_missed(results, method_missed):
         records = sorted((r for r in out["records"] if r["method"] == method), key=lambda r: r["dt"])
         for r, m in zip(records, counts):
             r["missed"] = m
+            r["detected"] = r["events"] - r["initial_contacts"] - m  # as the results reader checks
             r["missed_fraction"] = m / max(1, r["events"] - r["initial_contacts"])
     return out
 
@@ -106,7 +107,7 @@ def test_bad_results_exit_2_naming_the_field(tmp_path, cli, real_results, edit, 
 def test_not_json_exits_2(tmp_path, cli):
     (tmp_path / "x.json").write_text("{")
     run = cli("report", tmp_path / "x.json", "-o", tmp_path / "out", check=False)
-    assert run.returncode == 2 and "x.json: not JSON" in run.stderr
+    assert run.returncode == 2 and "x.json: malformed JSON" in run.stderr
 
 
 @pytest.mark.skipif(not os.path.exists("/usr/bin/chromium"), reason="Debian's chromium is not installed")

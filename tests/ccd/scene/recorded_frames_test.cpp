@@ -222,6 +222,35 @@ TEST_CASE("recorded frames: every bad row is named by line and column", "[scene]
   CHECK(error_of(head + "0,0,0,0,0,1\n0,1e-300,1e300,0,0,1\n").find("frames.csv: bodies[0].velocity") == 0);
 }
 
+TEST_CASE("recorded frames: a body whose time goes backwards is named at that line", "[scene][import]") {
+  // Four bodies, one row each per frame time k / 120 s (lines 4k + 2 to 4k + 5). Body 3's
+  // row of frame 10 (line 45) says t = 0.001 instead of 0.083333: from there on its rows
+  // are copied with the time that went wrong, so its last time is frame 5's (line 25),
+  // before the file's last time. The error names line 45 and says t goes backwards there,
+  // not line 25, where nothing is wrong.
+  std::string text = "body,t,x,y,z,radius\n";
+  char row[128];
+  for (int k = 0; k <= 20; ++k)
+    for (int b = 0; b < 4; ++b) {
+      const double t = b == 3 && k >= 10 ? 0.001 * (k - 9) : k / 120.0;
+      std::snprintf(row, sizeof row, "%d,%.17g,%d,0,0,0.25\n", b, t, 2 * b);
+      text += row;
+    }
+  CHECK(error_of(text) ==
+        "frames.csv: line 45: t: body \"3\" goes backwards here (t = 0.001000 after t = 0.075000 on line 41), so it "
+        "ends at t = 0.075000, before the file's last time 0.166667 (every body needs a frame at the first and the last "
+        "time)");
+  // A body that starts late because its first row went back in time: the same line.
+  CHECK(error_of("body,t,x,y,z,radius\n0,0,0,0,0,1\n1,0.5,5,0,0,1\n0,1,0,0,0,1\n1,0.2,5,0,0,1\n1,1,5,0,0,1\n") ==
+        "frames.csv: line 5: t: body \"1\" goes backwards here (t = 0.200000 after t = 0.500000 on line 3), so it "
+        "starts at t = 0.200000, after the file's first time 0.000000 (every body needs a frame at the first and the "
+        "last time)");
+  // Rows in any order stay allowed: backwards steps are only named when a body misses the
+  // file's first or last time.
+  CHECK(import_text("body,t,x,y,z,radius\n0,1,0,0,0,1\n1,1,5,0,0,1\n0,0,0,0,0,1\n1,0,5,0,0,1\n").scene.bodies.size() ==
+        2);
+}
+
 TEST_CASE("recorded frames: a recorded motion's truth equals the truth of the scene it records", "[scene][import]") {
   // A scene written directly: bodies with velocity changes at dyadic frame times (every
   // 1/8 s), no walls, no gravity. Its centres at the frames, imported, give a scene with
