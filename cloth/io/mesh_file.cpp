@@ -24,7 +24,12 @@ bool named_ply(const std::string& path) {
 }
 
 std::string face_text(const std::array<std::uint32_t, 3>& f) {
-  return "(" + std::to_string(f[0]) + ", " + std::to_string(f[1]) + ", " + std::to_string(f[2]) + ")";
+  std::string out(1, '(');
+  for (std::size_t k = 0; k < 3; ++k) {
+    out += std::to_string(f[k]);
+    out += k < 2 ? ", " : ")";
+  }
+  return out;
 }
 
 }  // namespace

@@ -56,9 +56,13 @@ inline bool same_bits(const TriangleMesh& a, const TriangleMesh& b) {
 }
 
 // The mesh with every coordinate rounded to the nearest float.
+// (Through floats held in an array: GCC 12 at -O3 dropped the rounding of two of the three
+// coordinates when it was written in place into the Eigen vector.)
 inline TriangleMesh as_floats(TriangleMesh m) {
-  for (Vec3& v : m.vertices)
-    for (int k = 0; k < 3; ++k) v[k] = static_cast<double>(static_cast<float>(v[k]));
+  for (Vec3& v : m.vertices) {
+    const std::array<float, 3> f{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
+    v = Vec3(static_cast<double>(f[0]), static_cast<double>(f[1]), static_cast<double>(f[2]));
+  }
   return m;
 }
 

@@ -30,12 +30,18 @@ std::string shortest(double v) {
 // face number, corner number), each vertex line followed by `after_vertex`.
 template <class Corner>
 std::string obj_text(const TriangleMesh& m, Corner corner, const std::string& after_vertex = "", const std::string& eol = "\n") {
-  std::string s = "# a test mesh" + eol + "mtllib test.mtl" + eol + "o mesh" + eol;
-  for (const Vec3& v : m.vertices) s += "v " + shortest(v.x()) + " " + shortest(v.y()) + " " + shortest(v.z()) + after_vertex + eol;
-  s += "vt 0 0" + eol + "vt 1 0" + eol + "vn 0 0 1" + eol + "g part" + eol + "usemtl red" + eol + "s off" + eol;
+  // Appends only: GCC 12 warns falsely (-Wstringop-overflow) on "literal" + temporary.
+  std::string s;
+  for (const char* line : {"# a test mesh", "mtllib test.mtl", "o mesh"}) (s += line) += eol;
+  for (const Vec3& v : m.vertices) {
+    s += "v";
+    for (int k = 0; k < 3; ++k) (s += ' ') += shortest(v[k]);
+    (s += after_vertex) += eol;
+  }
+  for (const char* line : {"vt 0 0", "vt 1 0", "vn 0 0 1", "g part", "usemtl red", "s off"}) (s += line) += eol;
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     s += "f";
-    for (std::size_t k = 0; k < 3; ++k) s += " " + corner(static_cast<long>(m.faces[f][k]) + 1, f, k);
+    for (std::size_t k = 0; k < 3; ++k) (s += ' ') += corner(static_cast<long>(m.faces[f][k]) + 1, f, k);
     s += eol;
   }
   return s;
