@@ -108,8 +108,10 @@ MeshFramePair tori(std::size_t faces) {
   // Two linked tori: A about z through the origin, B about y through (1, 0, 0). Their core
   // circles stay 1 apart, so the tubes (radius 1/4) are 1/2 apart at t = 0. Each twists
   // about its own axis, and B moves 0.6 towards A: its core comes within 0.4 of A's.
+  // At least 4 sides per tube: a 3-sided tube's cross-section (inscribed radius 1/8) is
+  // too thin for the tubes to touch, and small frames would have no collision.
   MeshFramePair m;
-  const auto nv = std::max<std::uint32_t>(3, static_cast<std::uint32_t>(std::lround(std::sqrt(faces / 16.0))));
+  const auto nv = std::max<std::uint32_t>(4, static_cast<std::uint32_t>(std::lround(std::sqrt(faces / 16.0))));
   const auto nu = 4 * nv;  // 2 tori x 2 nu nv faces
   add_torus(m, nu, nv, Vec3(0, 0, 0), 2, 0.3, Vec3::Zero());
   add_torus(m, nu, nv, Vec3(1, 0, 0), 1, -0.3, Vec3(-0.6, 0, 0));
