@@ -55,14 +55,18 @@ inline bool same_bits(const TriangleMesh& a, const TriangleMesh& b) {
   return true;
 }
 
-// The mesh with every coordinate rounded to the nearest float.
-// (Through floats held in an array: GCC 12 at -O3 dropped the rounding of two of the three
-// coordinates when it was written in place into the Eigen vector.)
+// The mesh with every coordinate rounded to the nearest float. The float goes through a
+// volatile: GCC 12 at -O3 (SLP vectorization of the x and y lanes) dropped the
+// double -> float -> double round trip of two of the three coordinates, written in place or
+// through a float array, so the expected values were the unrounded doubles.
+inline double nearest_float(double x) {
+  volatile float f = static_cast<float>(x);
+  return static_cast<double>(f);
+}
+
 inline TriangleMesh as_floats(TriangleMesh m) {
-  for (Vec3& v : m.vertices) {
-    const std::array<float, 3> f{static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z())};
-    v = Vec3(static_cast<double>(f[0]), static_cast<double>(f[1]), static_cast<double>(f[2]));
-  }
+  for (Vec3& v : m.vertices)
+    for (int k = 0; k < 3; ++k) v[k] = nearest_float(v[k]);
   return m;
 }
 
