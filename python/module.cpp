@@ -14,4 +14,5 @@ PYBIND11_MODULE(ccdlab, m) {
   bind_broad_phases(m);
   bind_bounds(m);
   bind_run(m);
+  bind_mesh_ccd(m);
 }

@@ -111,6 +111,7 @@ TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt
       if (touching) {
         result.status = QueryStatus::Hit;
         result.toi = first_open_time(box.lo[0]);
+        result.toi_upper = box.hi[0];
         return result;
       }
     }
@@ -118,6 +119,7 @@ TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt
     if (width <= width_limit || dim < 0) {
       result.status = QueryStatus::Hit;
       result.toi = first_open_time(box.lo[0]);
+      if (width <= width_limit) result.toi_upper = box.hi[0];
       return result;
     }
     detail::push_halves(box, dim, stack);

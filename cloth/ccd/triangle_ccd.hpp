@@ -48,6 +48,12 @@ struct TriangleCcdOptions {
 struct TriangleCcdResult {
   QueryStatus status = QueryStatus::Miss;  ///< Hit, Miss or Degenerate
   double toi = std::numeric_limits<double>::infinity();  ///< Hit: a lower bound of the first contact time
+  /// A Hit certified at a time: at some t in [toi, toi_upper] the primitives are within the
+  /// separation of each other (a proved contact), or every coordinate of their difference
+  /// is within separation + w + twice the error bound, w the image width (a narrow
+  /// image: w <= max(tolerance x extent, 4 x the error bound)). Infinity when nothing is
+  /// certified: a spent budget, a box at the split depth limit, Degenerate input, a Miss.
+  double toi_upper = std::numeric_limits<double>::infinity();
   std::uint32_t boxes = 0;                 ///< parameter boxes examined
   bool budget_spent = false;               ///< Hit because max_boxes ran out
 };

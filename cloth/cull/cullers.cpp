@@ -2,6 +2,7 @@
 
 #include <cloth/cull/box_culler.hpp>
 #include <cloth/cull/bvh_culler.hpp>
+#include <cloth/cull/mesh_sweep_culler.hpp>
 #include <cloth/cull/sensor_culler.hpp>
 
 #include <deque>
@@ -42,6 +43,10 @@ std::vector<CullerEntry> make_table() {
   t.push_back({"sensors", true, "particle sensors flag folds; the bvh tests only what they flag", [] {
                  return std::unique_ptr<Culler>(std::make_unique<SensorCuller>());
                }});
+  t.push_back({"mesh_sweep", false,
+               "sort and sweep on the axis of largest variance: vertex boxes against face boxes, edges against "
+               "edges, with half-interval boxes",
+               [] { return std::unique_ptr<Culler>(std::make_unique<MeshSweepCuller>()); }});
   for (const BroadPhaseInfo& info : broad_phase_registry())
     t.push_back(boxes_entry(std::string(kBoxesPrefix) + std::string(info.name), parse_broad_phase(info.name)));
   return t;

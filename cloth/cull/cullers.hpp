@@ -6,6 +6,9 @@
 //   bvh_cones           bvh with normal-cone culling of self-tests (may drop pairs: triangle_bvh.hpp)
 //   sensors             particle sensors flag folds, the bvh tests what they flag (may drop pairs:
 //                       sensor_culler.hpp)
+//   mesh_sweep          sort and sweep on the axis of largest variance, vertices against faces and
+//                       edges against edges, with half-interval boxes (conservative;
+//                       cloth/mesh_ccd/mesh_sweep.hpp)
 //   boxes:<broad phase> primitive boxes through a broad phase of ccd/broad_phase/registry.hpp,
 //                       e.g. "boxes:sap", "boxes:grid:cell=0.1" (conservative)
 //

@@ -9,10 +9,26 @@
 #include <cloth/sim/cloth_mesh.hpp>
 #include <ccd/geometry/aabb.hpp>
 
+#include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
 namespace ccd::cloth {
+
+/// The box of the segment from a to b, widened by `inflate` (m, >= 0, finite) and rounded
+/// outwards: the rounded difference may land above the exact one, so one step down makes
+/// it a lower bound (and one step up an upper bound for hi). No widening when inflate = 0.
+inline Aabb swept_point_box(const Vec3& a, const Vec3& b, double inflate) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Aabb box{a.cwiseMin(b), a.cwiseMax(b)};
+  if (inflate > 0)
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = std::nextafter(box.lo[k] - inflate, -inf);
+      box.hi[k] = std::nextafter(box.hi[k] + inflate, inf);
+    }
+  return box;
+}
 
 /// Every vertex's swept box for x0 -> x1, widened by `inflate` (m, >= 0, finite).
 void vertex_boxes(std::span<const Vec3> x0, std::span<const Vec3> x1, double inflate, std::vector<Aabb>& out);

@@ -1,6 +1,7 @@
 // `ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json]`: runs triangle CCD queries stored in the
 // public CCD benchmark's format and measures misses, false positives and time per query.
 #include "command.hpp"
+#include "mesh_ccd_command.hpp"
 
 #include "../work_estimate.hpp"
 
@@ -52,6 +53,7 @@ std::string micros(double seconds) {
 }
 
 int run_ccd(std::span<const std::string> args) {
+  if (is_mesh_ccd_call(args)) return run_mesh_ccd(args);  // two mesh frames (mesh_ccd.cpp)
   auto usage_error = [](const std::string& msg) {
     std::cerr << "ccdlab ccd: " << msg << " (see ccdlab ccd --help)\n";
     return kExitBadInput;
@@ -185,6 +187,8 @@ extern const Command kCcdCommand = {
     "usage: ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json] [--separation D] [--tolerance T]\n"
     "                  [--max-boxes N] [--exact] [--force]\n"
     "       ccdlab ccd --write-hard --kind vf|ee -o FILE.csv\n"
+    "       ccdlab ccd FRAME0 FRAME1 [-o OUT.json] [--separation D] [--cull NAME] [--threads N]\n"
+    "                  [--exact] [--quiet]\n"
     "\n"
     "Reads queries in the public CCD benchmark's format (8 rows per query, 7 integer columns:\n"
     "numerator and denominator of x, y, z, then the expected 0/1 result; rows v, f0, f1, f2 or\n"
@@ -198,6 +202,18 @@ extern const Command kCcdCommand = {
     "--write-hard     writes ccdlab's hand-built hard queries (expected result decided exactly)\n"
     "--force          read a query file larger than 1e9 bytes (refused before the work\n"
     "                 otherwise); FILE.csv must be a regular file (not a folder or a device)\n"
+    "\n"
+    "Mesh frames (FRAME0 FRAME1: PLY or OBJ files of one triangle mesh, same faces; every vertex\n"
+    "moves linearly from FRAME0 at t = 0 to FRAME1 at t = 1): finds the vertex-face and edge-edge\n"
+    "pairs that come within the separation, and the earliest time of impact (docs/mesh-ccd.md).\n"
+    "Prints a summary; -o writes ccdlab-mesh-ccd/1 JSON (docs/formats.md).\n"
+    "--separation D   minimum separation (default 0): contact means distance <= D\n"
+    "--cull NAME      broad phase: mesh_sweep (default), brute, bvh, bvh_cones, sensors,\n"
+    "                 boxes:<broad phase>[:options] (ccdlab methods lists the broad phases)\n"
+    "--threads N      threads (default 0: one per core); results do not depend on it\n"
+    "--exact          decide every kernel hit with the exact rational reference and list the\n"
+    "                 kernel's false positives\n"
+    "--quiet          no progress on standard error\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_ccd};

@@ -24,11 +24,13 @@ extern const Command kViewCommand;
 extern const Command kPosesCommand;
 extern const Command kImportCommand;
 extern const Command kPackCommand;
+extern const Command kMeshFramesCommand;
 
 std::span<const Command> commands() {
   static const Command table[] = {kRunCommand,   kTruthCommand,   kSceneCommand, kMethodsCommand, kMergeCommand,
                                   kCcdCommand,   kClothCommand,   kReportCommand, kAnimateCommand,
-                                  kViewCommand,  kPosesCommand,   kImportCommand, kPackCommand};
+                                  kViewCommand,  kPosesCommand,   kImportCommand, kPackCommand,
+                                  kMeshFramesCommand};
   return table;
 }
 

@@ -109,7 +109,9 @@ TEST_CASE("the box cullers and bvh keep exactly the pairs whose primitive boxes 
         if (c.name == "brute" || c.may_drop) continue;
         INFO(c.name << (continuous ? " continuous" : " discrete") << ", separation " << separation);
         const std::vector<Candidate> got = c.cull(mesh, x0, x1, separation);
-        if (c.name == "bvh_cones")  // a subset: it skips self-tests of patches proved flat
+        // Subsets: bvh_cones skips self-tests of patches proved flat, mesh_sweep the pairs
+        // whose boxes over both halves of the interval are apart.
+        if (c.name == "bvh_cones" || c.name == "mesh_sweep")
           CHECK(std::includes(reference.begin(), reference.end(), got.begin(), got.end()));
         else
           CHECK(got == reference);

@@ -55,15 +55,18 @@ inline bool same_bits(const TriangleMesh& a, const TriangleMesh& b) {
   return true;
 }
 
-// The mesh with every coordinate rounded to the nearest float.
-// Each float goes through a volatile: GCC 12 at -O3 dropped the double -> float -> double
-// rounding of some coordinates when the conversions could be folded together.
-inline double rounded_to_float(double x) {
+// The mesh with every coordinate rounded to the nearest float. The float goes through a
+// volatile: GCC 12 at -O3 (SLP vectorization of the x and y lanes) dropped the
+// double -> float -> double round trip of two of the three coordinates, written in place or
+// through a float array, so the expected values were the unrounded doubles.
+inline double nearest_float(double x) {
   volatile float f = static_cast<float>(x);
   return static_cast<double>(f);
 }
+
 inline TriangleMesh as_floats(TriangleMesh m) {
-  for (Vec3& v : m.vertices) v = Vec3(rounded_to_float(v.x()), rounded_to_float(v.y()), rounded_to_float(v.z()));
+  for (Vec3& v : m.vertices)
+    for (int k = 0; k < 3; ++k) v[k] = nearest_float(v[k]);
   return m;
 }
 
