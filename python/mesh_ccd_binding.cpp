@@ -25,11 +25,14 @@ std::vector<ccd::Vec3> positions(const Positions& a, const char* name) {
   if (a.ndim() != 2 || a.shape(1) != 3) throw ccd::InputError(kWho, name, "must be an (n, 3) array of positions");
   std::vector<ccd::Vec3> out(static_cast<std::size_t>(a.shape(0)));
   const double* d = a.data();
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = ccd::Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] = ccd::Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
+    if (!out[i].allFinite()) throw ccd::InputError(kWho, std::string(name) + "[" + std::to_string(i) + "]", "coordinate not finite");
+  }
   return out;
 }
 
-std::vector<std::array<std::uint32_t, 3>> faces(const py::array& f) {
+std::vector<std::array<std::uint32_t, 3>> faces(const py::array& f, std::size_t vertices) {
   if (f.ndim() != 2 || f.shape(1) != 3) throw ccd::InputError(kWho, "F", "must be an (m, 3) array of vertex indices");
   if (f.size() > 0 && !py::isinstance<py::array_t<std::int64_t>>(f) && f.dtype().kind() != 'i' &&
       f.dtype().kind() != 'u')
@@ -40,9 +43,13 @@ std::vector<std::array<std::uint32_t, 3>> faces(const py::array& f) {
   for (std::size_t i = 0; i < out.size(); ++i)
     for (std::size_t k = 0; k < 3; ++k) {
       const std::int64_t v = d[3 * i + k];
-      if (v < 0 || v > 0xffffffffLL)
-        throw ccd::InputError(kWho, "F[" + std::to_string(i) + "]", "vertex index " + std::to_string(v) + " out of range");
+      if (v < 0 || static_cast<std::uint64_t>(v) >= vertices)
+        throw ccd::InputError(kWho, "F[" + std::to_string(i) + "]",
+                              "vertex index " + std::to_string(v) + " out of range (" + std::to_string(vertices) + " vertices)");
       out[i][k] = static_cast<std::uint32_t>(v);
+      for (std::size_t j = 0; j < k; ++j)
+        if (out[i][j] == out[i][k])
+          throw ccd::InputError(kWho, "F[" + std::to_string(i) + "]", "vertex " + std::to_string(v) + " repeated");
     }
   return out;
 }
@@ -50,7 +57,9 @@ std::vector<std::array<std::uint32_t, 3>> faces(const py::array& f) {
 py::object mesh_ccd(const Positions& v0, const Positions& v1, const py::array& f, double separation,
                     const std::string& cull, unsigned threads, bool exact) {
   const std::vector<ccd::Vec3> x0 = positions(v0, "V0"), x1 = positions(v1, "V1");
-  const auto fs = faces(f);
+  if (x0.size() != x1.size())
+    throw ccd::InputError(kWho, "V1", "has " + std::to_string(x1.size()) + " vertices, V0 has " + std::to_string(x0.size()));
+  const auto fs = faces(f, x0.size());
   ccd::cloth::MeshCcdOptions o;
   o.separation = separation;
   o.culler = cull;

@@ -42,6 +42,11 @@ py::array_t<double> per_body(const ccd::Scene& s, Get get) {
 // The times as pybind11's list conversion reads them, with its failures named: a 0-d array
 // passes its sequence check and then fails len() with a bare "len() of unsized object".
 std::vector<double> times_of(const py::object& times) {
+  // An array of two or more dimensions would be read row by row, each row through float():
+  // [[0.5]] would pass as [0.5].
+  if (py::isinstance<py::array>(times) && times.cast<py::array>().ndim() > 1)
+    throw py::type_error("Scene.positions: times must be a one-dimensional sequence of numbers, got an array of " +
+                         std::to_string(times.cast<py::array>().ndim()) + " dimensions");
   try {
     return times.cast<std::vector<double>>();
   } catch (const py::cast_error&) {

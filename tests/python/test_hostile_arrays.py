@@ -242,7 +242,32 @@ def test_arrays_where_a_scene_object_belongs(value):
 
 # The entry points above, and those that take no arrays or dicts. A new function or class of the
 # module belongs in one of the two lists (with a test above when it takes arrays or dicts).
-TESTED = {"BroadPhase", "Bound", "Scene", "scene_from_json", "generate", "run", "truth"}
+MESH_V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64)
+MESH_F = np.array([[0, 1, 2], [0, 2, 3]], dtype=np.int64)
+MESH_SHAPES = st.one_of(ANY_SHAPE, st.tuples(st.integers(0, 5), st.just(3)))
+
+
+@SETTINGS
+@given(value=hostile_arrays(MESH_SHAPES), which=st.sampled_from(["V0", "V1", "F"]))
+def test_mesh_ccd_arrays(value, which):
+    args = {"V0": MESH_V, "V1": MESH_V + 0.25, "F": MESH_F}
+    args[which] = value
+    result, error = call(ccdlab.mesh_ccd, args["V0"], args["V1"], args["F"])
+    if error is not None:
+        # A vertex array of another length than the other frame's is named as V1.
+        refused(error, which if which == "F" else "V")
+        return
+    if which == "F":
+        plain = as_type(value, np.int64)
+        assert plain is not None and plain.ndim == 2 and plain.shape[1] == 3
+        assert np.all((plain >= 0) & (plain < len(MESH_V)))
+    else:
+        plain = as_type(value, np.float64)
+        assert plain is not None and plain.shape == MESH_V.shape and np.all(np.isfinite(plain))
+    assert isinstance(result, dict)
+
+
+TESTED = {"BroadPhase", "Bound", "Scene", "scene_from_json", "generate", "run", "truth", "mesh_ccd"}
 NO_ARRAYS = {"InputError", "Truth", "load_scene", "load_truth", "methods", "generators"}
 
 

@@ -71,13 +71,13 @@ def test_bad_input_is_refused():
     v0, v1, f = folded_sheet(4)
     bad = f.copy()
     bad[3, 1] = 9001
-    with pytest.raises(ccdlab.InputError, match="face 3: vertex index 9001 out of range"):
+    with pytest.raises(ccdlab.InputError, match=r"F\[3\]: vertex index 9001 out of range"):
         ccdlab.mesh_ccd(v0, v1, bad)
     nan = v1.copy()
     nan[5, 2] = np.nan
-    with pytest.raises(ccdlab.InputError, match="frame 1: vertex 5: coordinate not finite"):
+    with pytest.raises(ccdlab.InputError, match=r"V1\[5\]: coordinate not finite"):
         ccdlab.mesh_ccd(v0, nan, f)
-    with pytest.raises(ccdlab.InputError, match="different vertex counts"):
+    with pytest.raises(ccdlab.InputError, match="V1: has \\d+ vertices, V0 has \\d+"):
         ccdlab.mesh_ccd(v0, v1[:-1], f)
     with pytest.raises(ccdlab.InputError, match="unknown culler 'nope'"):
         ccdlab.mesh_ccd(v0, v1, f, cull="nope")
