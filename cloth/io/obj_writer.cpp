@@ -1,6 +1,7 @@
 #include "obj_writer.hpp"
 
 #include <cloth/io/mesh_check.hpp>
+#include <cloth/io/number_text.hpp>
 
 #include <ccd/io/atomic_file.hpp>
 
@@ -8,18 +9,6 @@
 #include <charconv>
 
 namespace ccd::cloth {
-
-namespace {
-
-template <class T>
-void append_number(std::string& out, T v) {
-  std::array<char, 32> buf{};
-  const auto [ptr, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  (void)ec;  // 32 bytes hold every shortest double and 64-bit integer
-  out.append(buf.data(), ptr);
-}
-
-}  // namespace
 
 std::string format_obj(const TriangleMesh& mesh) {
   check_mesh_for_writing(mesh, false, "OBJ writer");

@@ -1,6 +1,7 @@
 #include "ply_writer.hpp"
 
 #include <cloth/io/mesh_check.hpp>
+#include <cloth/io/number_text.hpp>
 
 #include <ccd/io/atomic_file.hpp>
 
@@ -13,14 +14,6 @@
 namespace ccd::cloth {
 
 namespace {
-
-template <class T>
-void append_number(std::string& out, T v) {
-  std::array<char, 32> buf{};
-  const auto [ptr, ec] = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  (void)ec;  // 32 bytes hold every shortest double, float and 32-bit integer
-  out.append(buf.data(), ptr);
-}
 
 template <class U>
 void append_binary(std::string& out, U u, bool swap) {
