@@ -1,7 +1,5 @@
 #include "environment.hpp"
 
-#include "commands/command.hpp"
-
 #include <ccdlab_git_hash.hpp>
 
 #include <fstream>

@@ -10,7 +10,7 @@
 #include <experiments/cloth_experiment.hpp>
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <algorithm>
 #include <functional>

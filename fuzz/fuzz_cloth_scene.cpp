@@ -7,7 +7,7 @@
 // where they were.
 #include "fuzz_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <cloth/sim/cloth_mesh.hpp>
 #include <cloth/sim/cloth_scene.hpp>
 #include <cloth/sim/cloth_simulator.hpp>

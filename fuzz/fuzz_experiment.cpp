@@ -6,7 +6,7 @@
 #include <experiments/run_experiment.hpp>
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   ccdlab::Experiment e;

@@ -5,7 +5,7 @@
 #include <experiments/results_file.hpp>
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 #include <cloth/io/ply_reader.hpp>
 #include <cloth/io/ply_writer.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <bit>
 #include <cmath>

@@ -7,7 +7,7 @@
 #include "fuzz_support.hpp"
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <cloth/cull/candidate.hpp>
 #include <cloth/sim/cloth_mesh.hpp>
 #include <cloth/sim/cloth_scene.hpp>

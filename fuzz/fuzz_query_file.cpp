@@ -9,7 +9,7 @@
 // cloth/ccd/triangle_ccd.hpp).
 #include "fuzz_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 #include <cloth/io/query_file.hpp>

@@ -5,7 +5,7 @@
 #include <experiments/results_file.hpp>
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const unsigned char* data, std::size_t size) {
   nlohmann::json results;

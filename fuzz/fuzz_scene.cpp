@@ -6,7 +6,7 @@
 
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/ground_truth.hpp>

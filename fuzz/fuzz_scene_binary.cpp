@@ -3,7 +3,7 @@
 // format has one spelling per scene), and whose JSON form reads back with the same digest.
 #include "fuzz_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_binary.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>

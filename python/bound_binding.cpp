@@ -6,7 +6,7 @@
 
 #include <bounds/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <stdexcept>
 

@@ -5,7 +5,7 @@
 #include "bindings.hpp"
 
 #include <ccd/broad_phase/registry.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <cmath>
 #include <span>

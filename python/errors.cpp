@@ -3,7 +3,7 @@
 #include "bindings.hpp"
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 namespace ccdlab::python {
 

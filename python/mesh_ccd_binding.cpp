@@ -5,7 +5,7 @@
 
 #include <cloth/mesh_ccd/mesh_ccd.hpp>
 #include <cloth/mesh_ccd/mesh_ccd_json.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/parallel_for.hpp>
 
 #include <array>

@@ -9,7 +9,7 @@
 #include <experiments/run_experiment.hpp>
 
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/parallel_for.hpp>
 

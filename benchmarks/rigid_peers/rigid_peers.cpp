@@ -41,7 +41,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/narrow/narrow_table.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/rigid_truth.hpp>

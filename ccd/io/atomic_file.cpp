@@ -1,6 +1,6 @@
 #include <ccd/io/atomic_file.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <algorithm>
 #include <array>

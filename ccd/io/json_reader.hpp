@@ -13,7 +13,7 @@
 // Field access (JsonReader): every failure throws InputError naming the file and the field
 // path (`bodies[3].radius`), so readers of different formats report bad input the same way.
 #include <ccd/geometry/vec3.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <cstdint>
 #include <initializer_list>

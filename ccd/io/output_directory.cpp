@@ -1,7 +1,7 @@
 #include "output_directory.hpp"
 
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <cerrno>
 #include <cstdio>

@@ -1,7 +1,7 @@
 #include <ccd/scene/recorded_frames.hpp>
 
 #include <ccd/geometry/double_double.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
 #include <Eigen/Geometry>

@@ -3,7 +3,7 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_binary.hpp>
 #include <ccd/shape/mass_properties.hpp>
 

@@ -5,7 +5,7 @@
 #include <cloth/io/ply_reader.hpp>
 #include <cloth/io/regular_file.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/parallel_for.hpp>
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 #include <cloth/io/quoted_word.hpp>
 #include <cloth/io/regular_file.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <array>
 #include <charconv>

@@ -2,7 +2,7 @@
 
 #include <cloth/io/quoted_word.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <array>
 #include <charconv>

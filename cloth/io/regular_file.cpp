@@ -1,6 +1,6 @@
 #include "regular_file.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <cerrno>
 #include <cstring>

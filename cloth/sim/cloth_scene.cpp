@@ -3,7 +3,7 @@
 #include <ccd/io/json_reader.hpp>
 
 #include <Eigen/Geometry>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <cmath>
 #include <initializer_list>

@@ -4,7 +4,7 @@
 #include "../../experiments/cloth_experiment.hpp"
 #include "cli_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <cloth/cull/cullers.hpp>
 
 #include <catch2/catch.hpp>

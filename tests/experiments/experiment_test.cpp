@@ -2,7 +2,7 @@
 // fields (unknown ones named with the nearest known one).
 #include "../../experiments/experiment.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -3,7 +3,7 @@
 // ground truth. Shards come from real runs; each case breaks one thing.
 #include <experiments/results_file.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 #include <cstdlib>

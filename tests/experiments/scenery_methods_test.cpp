@@ -15,7 +15,7 @@
 #include "../ccd/scene/scenery_support.hpp"
 
 #include <bounds/registry.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 

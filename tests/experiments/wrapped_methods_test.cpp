@@ -10,7 +10,7 @@
 #include "../../experiments/runner.hpp"
 #include "../ccd/scene/periodic_scenes.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <experiments/generators/registry.hpp>
 

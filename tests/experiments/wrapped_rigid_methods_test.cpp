@@ -9,7 +9,7 @@
 #include "../../experiments/runner.hpp"
 #include "../ccd/scene/periodic_rigid_scenes.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/rigid_truth.hpp>
 #include <experiments/generators/registry.hpp>
 

@@ -1,7 +1,7 @@
 // OutputFile: checked before the work, only regular files, never an input, no temporary
 // file left on any exit path; SHA-256 against the FIPS 180-4 examples.
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -1,7 +1,7 @@
 // OutputDirectory: a folder appears whole at commit or not at all, and a folder the
 // command did not write is never replaced.
 #include <ccd/io/output_directory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 #include <filesystem>

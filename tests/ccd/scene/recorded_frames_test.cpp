@@ -3,7 +3,7 @@
 // bad row named by its line and column, and a recorded motion's truth against the same
 // scene written directly.
 #include <ccd/motion/rotation.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/recorded_frames.hpp>
 #include <ccd/truth/ground_truth.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The message a scene's JSON is refused with (ccd::InputError), or "" when it is accepted,
 // for tests of the scene reader's validation.
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
 #include <nlohmann/json.hpp>

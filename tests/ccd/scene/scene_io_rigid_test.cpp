@@ -1,7 +1,7 @@
 // ccdlab-scene/2: shapes, orientation and prescribed spin.
 #include "scene_error.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 

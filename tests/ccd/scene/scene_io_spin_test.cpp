@@ -2,7 +2,7 @@
 // round trip, and every refusal naming the file, the field and the index.
 #include "scene_error.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 

@@ -1,6 +1,6 @@
 #include "scene_error.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
 #include <catch2/catch.hpp>

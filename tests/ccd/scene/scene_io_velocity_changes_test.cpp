@@ -1,7 +1,7 @@
 // The scene field `velocity_changes` (docs/formats.md): read, written, validated.
 #include "scene_error.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 

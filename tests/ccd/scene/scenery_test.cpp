@@ -2,7 +2,7 @@
 // the reason, writing back, the digest, and the polygon helpers of ccd/scene/scenery.hpp.
 #include "scene_error.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/scene/scenery.hpp>

@@ -1,4 +1,4 @@
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
 
 #include <catch2/catch.hpp>

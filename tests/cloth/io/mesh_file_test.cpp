@@ -5,7 +5,7 @@
 
 #include "mesh_test_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 #include <filesystem>

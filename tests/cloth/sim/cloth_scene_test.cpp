@@ -1,6 +1,6 @@
 #include <cloth/sim/cloth_scene.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

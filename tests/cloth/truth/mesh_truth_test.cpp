@@ -3,7 +3,7 @@
 #include <cloth/sim/cloth_simulator.hpp>
 #include <cloth/truth/mesh_truth.hpp>
 #include <cloth/truth/mesh_truth_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <catch2/catch.hpp>
 #include <random>

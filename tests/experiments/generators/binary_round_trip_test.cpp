@@ -4,7 +4,7 @@
 #include "../../ccd/scene/binary_scene_support.hpp"
 #include "generator_test_support.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_binary.hpp>
 #include <ccd/scene/scene_digest.hpp>
 
