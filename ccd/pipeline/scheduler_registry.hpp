@@ -1,10 +1,11 @@
 #pragma once
 // The one table of schedulers: what drives the step pipeline over an experiment's horizon.
 // A method names one after its broad phase, BOUND/BROADPHASE@SCHEDULER[:opt=value,...];
-// without "@" it is `fixed`, every option at its default (today's loop).
+// without "@" it is `fixed`, every option at its default.
 //   fixed      steps [k dt, (k+1) dt]: every body's bound over every step, every
 //              candidate pair tested, the narrow phase for every pair that passes
-//              (ccd/pipeline/step_pipeline.hpp).
+//              (ccd/pipeline/fixed_step_scheduler.hpp, one ccd/pipeline/step_pipeline.hpp
+//              run per step).
 //   earliest   Hubbard's earliest-contact scheduling (ccd/pipeline/earliest_scheduler.hpp):
 //              dt is the longest window a body's bound may cover; each pair is looked
 //              at again only at the earliest time its bounds allow contact.
