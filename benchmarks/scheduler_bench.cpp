@@ -1,6 +1,8 @@
 // The earliest-contact scheduler (ccd/pipeline/earliest_scheduler.hpp) against fixed steps
 // of the same bounds (ccd/pipeline/step_pipeline.hpp), over a whole horizon of 1 s, on two
-// scenes of the scheduling study (docs/studies.md), built here with a fixed seed:
+// scenes of the scheduling study (docs/studies.md), built here with a fixed seed. Both are
+// built by the scheduler registry's factory from their spec (ccd/pipeline/scheduler_registry.hpp)
+// and run over the horizon through the Scheduler interface:
 //  - sparse_gas: 2,000 spheres of radius 1 at volume fraction 0.002 in a walled cube,
 //    velocities uniform in the ball of radius 20;
 //  - bullets: 950 spheres of radius 1 at volume fraction 0.05 moving at up to 1, and 50
@@ -14,15 +16,15 @@
 //   scheduler_bench [benchmark flags]   e.g. --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
-#include <ccd/motion/state_cursor.hpp>
-#include <ccd/pipeline/earliest_scheduler.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <ccd/pipeline/scheduler.hpp>
+#include <ccd/pipeline/scheduler_registry.hpp>
 #include <ccd/util/thread_cpu_time.hpp>
 
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <string>
@@ -85,98 +87,57 @@ void report(benchmark::State& state, double cpu, double wall, const Costs& c) {
   state.counters["contacts"] = c.contacts;
 }
 
-// Fixed steps of dt over the horizon (the runner's loop, without its bookkeeping).
-void fixed(benchmark::State& state, const Fixture& (*scene)(), std::string method, double dt) {
+// One run of the scheduler `schedule` ("fixed", "earliest:stale=1", ...) of `method` over the
+// horizon, windows or steps of dt.
+void run(benchmark::State& state, const Fixture& (*scene)(), std::string method, std::string schedule, double dt) {
   const Fixture& f = scene();
   const std::size_t slash = method.find('/');
   const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
   const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
+  const ccd::SchedulerSpec spec = ccd::parse_scheduler(schedule);
+  ccd::ScheduleInput in;
+  in.motion = &f.motion;
+  in.horizon = f.scene.horizon;
+  in.acceleration_bound = f.scene.max_acceleration();
+  in.walls = f.scene.box;
+  in.timed = false;
+  ccd::ScheduleResult result;
   for (auto _ : state) {
-    ccd::StepPipeline pipeline(bound.make(), bound.info->knowledge, broad.make());
-    ccd::StateCursor cursor(f.motion);
-    std::vector<ccd::BodyState> states;
-    ccd::StepResult step;
-    ccd::StepContext ctx;
-    ctx.acceleration_bound = f.scene.max_acceleration();
-    ctx.walls = f.scene.box;
-    ctx.exact = bound.info->knowledge == ccd::Knowledge::Exact ? &f.motion : nullptr;
-    Costs c;
+    const std::unique_ptr<ccd::Scheduler> scheduler = spec.make({&bound, &broad, dt});
     const auto wall0 = std::chrono::steady_clock::now();
     const double cpu0 = ccd::thread_cpu_seconds();
-    for (std::uint64_t k = 0; double(k) * dt < f.scene.horizon; ++k) {
-      ctx.t0 = double(k) * dt;
-      ctx.t1 = std::min(double(k + 1) * dt, f.scene.horizon);
-      cursor.evaluate(ctx.t0, states);
-      ctx.start = states;
-      pipeline.run(ctx, f.motion, step, nullptr, cursor.pieces());
-      c.pair_checks += double(step.candidates.size());
-      c.narrow_calls += double(step.passed.size());
-      c.refreshes += double(f.motion.size());
-      c.contacts += double(step.contacts.size());
-    }
+    scheduler->run(in, result);
     const double cpu = ccd::thread_cpu_seconds() - cpu0;
-    report(state, cpu, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(), c);
-  }
-}
-
-// The earliest scheduler with windows of at most dt and the given options.
-void earliest(benchmark::State& state, const Fixture& (*scene)(), std::string method, double dt,
-              ccd::ScheduleOptions options) {
-  const Fixture& f = scene();
-  const std::size_t slash = method.find('/');
-  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
-  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
-  options.window = dt;
-  std::vector<ccd::ScheduledContact> contacts;
-  for (auto _ : state) {
-    ccd::EarliestScheduler sched(bound.make(), bound.make(), bound.info->knowledge, broad.make(), options);
-    const auto wall0 = std::chrono::steady_clock::now();
-    const double cpu0 = ccd::thread_cpu_seconds();
-    sched.run(f.motion, f.scene.horizon, f.scene.max_acceleration(), f.scene.box, contacts);
-    const double cpu = ccd::thread_cpu_seconds() - cpu0;
-    const ccd::ScheduleStats& st = sched.stats();
+    const ccd::ScheduleStats& st = result.stats;
     report(state, cpu, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
-           {double(st.pair_checks), double(st.narrow_calls), double(st.refreshes), double(contacts.size())});
+           {double(st.pair_checks), double(st.narrow_calls), double(st.refreshes), double(result.contacts.size())});
   }
-}
-
-ccd::ScheduleOptions opts(double stale, double reach, bool recheck, double chunk) {
-  ccd::ScheduleOptions o;
-  o.stale = stale;
-  o.reach = reach;
-  o.recheck = recheck;
-  o.chunk = chunk;
-  return o;
 }
 
 void register_all() {
-  const auto fix = [](const char* name, const Fixture& (*scene)(), const char* method, double dt) {
-    benchmark::RegisterBenchmark(name, fixed, scene, std::string(method), dt)->UseManualTime()->Unit(benchmark::kMillisecond);
-  };
-  const auto sched = [](const char* name, const Fixture& (*scene)(), const char* method, double dt,
-                        ccd::ScheduleOptions o) {
-    benchmark::RegisterBenchmark(name, earliest, scene, std::string(method), dt, o)
+  const auto add = [](const char* name, const Fixture& (*scene)(), const char* method, const char* schedule,
+                      double dt) {
+    benchmark::RegisterBenchmark(name, run, scene, std::string(method), std::string(schedule), dt)
         ->UseManualTime()
         ->Unit(benchmark::kMillisecond);
   };
   // Sparse gas: the fixed methods' best dt is the horizon (one bound per body).
-  fix("sparse_gas/fixed/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", 1.0);
-  fix("sparse_gas/fixed/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0);
-  sched("sparse_gas/earliest/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(0.25, 0, false, 2));
-  sched("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(0.25, 0, true, 2));
-  sched("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0,
-        opts(0.25, 0, true, 0));
-  sched("sparse_gas/earliest:stale=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", 1.0, opts(1.0, 0, false, 2));
-  sched("sparse_gas/earliest:stale=1/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", 1.0,
-        opts(1.0, 0, false, 2));
+  add("sparse_gas/fixed/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", "fixed", 1.0);
+  add("sparse_gas/fixed/capsule/grid/dt=1", sparse_gas, "capsule/grid", "fixed", 1.0);
+  add("sparse_gas/earliest/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest", 1.0);
+  add("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest:recheck=1", 1.0);
+  add("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas, "capsule/grid",
+      "earliest:recheck=1,chunk=0", 1.0);
+  add("sparse_gas/earliest:stale=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest:stale=1", 1.0);
+  add("sparse_gas/earliest:stale=1/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", "earliest:stale=1", 1.0);
   // Bullets: fixed steps need a dt small enough for the bullets.
-  fix("bullets/fixed/capsule/grid/dt=0.03", bullets, "capsule/grid", 0.03);
-  fix("bullets/fixed/capsule/grid/dt=0.01", bullets, "capsule/grid", 0.01);
-  sched("bullets/earliest:reach=16/capsule/grid/dt=1", bullets, "capsule/grid", 1.0, opts(0.25, 16, false, 2));
-  sched("bullets/earliest:reach=16,recheck=1/capsule/grid/dt=1", bullets, "capsule/grid", 1.0,
-        opts(0.25, 16, true, 2));
-  sched("bullets/earliest:reach=16,recheck=1,chunk=0/capsule/grid/dt=1", bullets, "capsule/grid", 1.0,
-        opts(0.25, 16, true, 0));
+  add("bullets/fixed/capsule/grid/dt=0.03", bullets, "capsule/grid", "fixed", 0.03);
+  add("bullets/fixed/capsule/grid/dt=0.01", bullets, "capsule/grid", "fixed", 0.01);
+  add("bullets/earliest:reach=16/capsule/grid/dt=1", bullets, "capsule/grid", "earliest:reach=16", 1.0);
+  add("bullets/earliest:reach=16,recheck=1/capsule/grid/dt=1", bullets, "capsule/grid",
+      "earliest:reach=16,recheck=1", 1.0);
+  add("bullets/earliest:reach=16,recheck=1,chunk=0/capsule/grid/dt=1", bullets, "capsule/grid",
+      "earliest:reach=16,recheck=1,chunk=0", 1.0);
 }
 
 }  // namespace

@@ -1,9 +1,7 @@
 #include "runner.hpp"
 
-#include <ccd/motion/state_cursor.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
-#include <ccd/pipeline/earliest_scheduler.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <ccd/pipeline/scheduler.hpp>
 #include <ccd/util/thread_cpu_time.hpp>
 
 #include <algorithm>
@@ -11,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -122,133 +121,73 @@ void match_static_contact(const RunInput& in, const StaticEventIndex& index, boo
   if (!matched) ++c.unexpected;
 }
 
-// A scheduled method: the earliest scheduler over the whole horizon, windows of at most dt.
-Counts run_scheduled_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
-  const ccd::Trajectories& traj = *in.trajectories;
+// Matches the contacts a run hands over with the truth as they are found, and counts them.
+class ContactMatcher final : public ccd::ContactSink {
+ public:
+  ContactMatcher(const RunInput& in, bool continuous, Counts& c)
+      : in_(in), continuous_(continuous), c_(c), static_index_(index_static_events(in.static_events)) {}
+  void found(std::span<const ccd::ScheduledContact> contacts,
+             std::span<const ccd::ScheduledStaticContact> static_contacts) override {
+    c_.confirmed += contacts.size();
+    c_.static_confirmed += static_contacts.size();
+    for (const ccd::ScheduledContact& sc : contacts)
+      match_contact(in_, continuous_, sc.pair, sc.contact, sc.from, sc.to, c_);
+    for (const ccd::ScheduledStaticContact& sc : static_contacts)
+      match_static_contact(in_, static_index_, continuous_, {sc.pair, sc.contact}, sc.from, sc.to, c_);
+  }
+
+ private:
+  const RunInput& in_;
+  bool continuous_;
+  Counts& c_;
+  StaticEventIndex static_index_;
+};
+
+// One run of the method's scheduler over the horizon (fixed steps of dt, or the earliest
+// scheduler with windows of at most dt: ccd/pipeline/scheduler_registry.hpp), timed, its
+// contacts matched with the truth.
+Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
   Counts c;
   const std::size_t n_events = in.truth->events().size();
   c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
   c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
   c.static_lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
-  ccd::ScheduleOptions options;
-  options.window = dt;
-  options.stale = method.scheduler.options.number("stale");
-  options.align = method.scheduler.options.integer("align") != 0;
-  options.refresh_bodies = method.scheduler.options.integer("refresh_bodies") != 0;
-  options.reach = method.scheduler.options.number("reach");
-  options.recheck = method.scheduler.options.integer("recheck") != 0;
-  options.chunk = method.scheduler.options.number("chunk");
-  options.rigid = in.rigid;
-  ccd::EarliestScheduler scheduler(method.bound.make(), method.bound.make(), method.bound.info->knowledge,
-                                   method.broad_phase.make(), options);
-  scheduler.set_scenery(in.scene->scenery);
-  std::vector<ccd::ScheduledContact> contacts;
-  ccd::StepTimes times;
+  const std::unique_ptr<ccd::Scheduler> scheduler = method.scheduler.make({&method.bound, &method.broad_phase, dt});
+  scheduler->set_scenery(in.scene->scenery);
+  ContactMatcher matcher(in, method.continuous(), c);
+  ccd::ScheduleInput input;
+  input.motion = in.trajectories;
+  input.rigid = in.rigid;
+  input.horizon = in.scene->horizon;
+  input.acceleration_bound = in.acceleration_bound;
+  input.walls = in.scene->box;
+  input.cancel = in.cancel;
+  input.sink = &matcher;
+  ccd::ScheduleResult result;
   const auto t_start = Clock::now();
   const double cpu_start = ccd::thread_cpu_seconds();
-  cancelled = !scheduler.run(traj, in.scene->horizon, in.acceleration_bound, in.scene->box, contacts, &times, in.cancel);
+  cancelled = !scheduler->run(input, result);
   c.cpu_s = ccd::thread_cpu_seconds() - cpu_start;
   c.total_s = seconds_since(t_start);
-  c.bound_s = times.bound;
-  c.broad_s = times.broad;
-  c.narrow_s = times.narrow;
-  const ccd::ScheduleStats& st = scheduler.stats();
+  c.bound_s = result.times.bound;
+  c.broad_s = result.times.broad;
+  c.narrow_s = result.times.narrow;
+  c.first_broad_s = result.first_broad_seconds;
+  const ccd::ScheduleStats& st = result.stats;
   c.candidates = st.candidates;
   c.bound_candidates = st.passed;
-  c.confirmed = contacts.size();
-  c.false_positives = st.narrow_calls - contacts.size();
+  c.false_positives = st.narrow_calls - c.confirmed;
+  c.counters = st.counters;
+  c.rebuilds = st.rebuilds;
   c.pair_checks = st.pair_checks;
   c.narrow_calls = st.narrow_calls;
   c.refreshes = st.refreshes;
   c.steps = st.batches;
-  for (const ccd::ScheduledContact& sc : contacts) match_contact(in, true, sc.pair, sc.contact, sc.from, sc.to, c);
   c.static_candidates = st.static_candidates;
   c.static_bound_candidates = st.static_passed;
-  c.static_confirmed = scheduler.static_contacts().size();
+  c.static_tests_saved = st.static_tests_saved;
   c.static_pair_checks = st.static_checks;
   c.static_narrow_calls = st.static_narrow_calls;
-  const StaticEventIndex static_index = index_static_events(in.static_events);
-  for (const ccd::ScheduledStaticContact& sc : scheduler.static_contacts())
-    match_static_contact(in, static_index, true, {sc.pair, sc.contact}, sc.from, sc.to, c);
-  return c;
-}
-
-Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
-  if (method.scheduled()) return run_scheduled_once(in, method, dt, cancelled);
-  const ccd::Trajectories& traj = *in.trajectories;
-  const TruthIndex& truth = *in.truth;
-  const double T = in.scene->horizon;
-  const bool continuous = method.continuous();
-
-  ccd::PipelineOptions options;
-  options.narrow_from_earliest = method.scheduler.options.integer("narrow_from_earliest") != 0;
-  options.kinematic = method.scheduler.options.integer("kinematic") != 0;
-  ccd::StepPipeline pipeline(method.bound.make(), method.bound.info->knowledge, method.broad_phase.make(),
-                             ccd::narrow_table(), options);
-  pipeline.set_scenery(in.scene->scenery);
-  std::vector<ccd::BodyState> states;
-  ccd::StepResult step;
-  ccd::StateCursor cursor(traj);
-
-  Counts c;
-  const std::size_t n_events = truth.events().size();
-  c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
-  c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
-  c.static_lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
-  const StaticEventIndex static_index = index_static_events(in.static_events);
-
-  const std::uint64_t samples = sample_count(T, dt);
-  const std::uint64_t K = samples == 0 ? 0 : samples - 1;
-  const std::uint64_t steps = samples == 0 ? 0 : continuous ? (double(K) * dt < T ? K + 1 : K) : samples;
-
-  ccd::StepContext ctx;
-  ctx.acceleration_bound = in.acceleration_bound;
-  ctx.walls = in.scene->box;
-  ctx.exact = method.bound.info->knowledge == ccd::Knowledge::Exact ? &traj : nullptr;
-  ctx.rigid = in.rigid;
-
-  const auto t_start = Clock::now();
-  const double cpu_start = ccd::thread_cpu_seconds();
-  for (std::uint64_t k = 0; k < steps; ++k) {
-    if (in.cancel && in.cancel->load(std::memory_order_relaxed)) {
-      cancelled = true;
-      break;
-    }
-    const double t0 = double(k) * dt;
-    const double t1 = continuous ? std::min(double(k + 1) * dt, T) : t0;
-    cursor.evaluate(t0, states);
-    ctx.t0 = t0;
-    ctx.t1 = t1;
-    ctx.start = states;
-
-    ccd::StepTimes times;
-    pipeline.run(ctx, traj, step, &times, cursor.pieces(), in.rigid);
-    c.bound_s += times.bound;
-    c.broad_s += times.broad;
-    c.narrow_s += times.narrow;
-    if (k == 0) c.first_broad_s = times.broad;
-    for (const ccd::Counter& counter : pipeline.broad_phase().counters()) {
-      auto it = c.counters.find(counter.name);
-      if (it == c.counters.end()) it = c.counters.emplace(std::string(counter.name), 0).first;
-      it->second += counter.value;
-    }
-    if (step.broad_stats.rebuilt) ++c.rebuilds;
-    c.candidates += step.candidates.size();
-    c.bound_candidates += step.passed.size();
-    c.confirmed += step.contacts.size();
-    c.false_positives += step.passed.size() - step.contacts.size();
-    c.static_candidates += step.static_candidates.size();
-    c.static_bound_candidates += step.static_passed.size();
-    c.static_confirmed += step.static_contacts.size();
-    c.static_tests_saved += step.static_tests_saved;
-
-    // Bookkeeping against the truth (not timed).
-    for (const ccd::PairContact& pc : step.contacts) match_contact(in, continuous, pc.pair, pc.contact, t0, t1, c);
-    for (const ccd::StaticContact& sc : step.static_contacts)
-      match_static_contact(in, static_index, continuous, sc, t0, t1, c);
-  }
-  c.cpu_s = ccd::thread_cpu_seconds() - cpu_start;
-  c.total_s = seconds_since(t_start);
   return c;
 }
 
@@ -274,16 +213,6 @@ bool velocity_changes_on_step_starts(const ccd::Scene& scene, double dt, bool sc
 }
 
 }  // namespace
-
-std::uint64_t sample_count(double horizon, double dt) {
-  if (!(dt > 0.0) || !std::isfinite(dt) || !(horizon >= 0.0)) return 0;
-  const double q = std::floor(horizon / dt);
-  if (!(q < 9.0e15)) return 0;  // beyond exact integers in double: refused by the experiment reader
-  auto K = static_cast<std::uint64_t>(q);
-  while (K > 0 && double(K) * dt > horizon) --K;
-  while (double(K + 1) * dt <= horizon) ++K;
-  return K + 1;
-}
 
 RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   RunRecord r;
@@ -314,10 +243,7 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   for (const Counts& o : runs) r.counts_stable = r.counts_stable && (o == c);
 
   const double T = in.scene->horizon;
-  const std::uint64_t samples = sample_count(T, dt);
-  const std::uint64_t K = samples == 0 ? 0 : samples - 1;
-  r.steps = samples == 0 ? 0 : r.continuous ? (double(K) * dt < T ? K + 1 : K) : samples;
-  if (r.scheduled) r.steps = c.steps;
+  r.steps = c.steps;  // fixed: the steps or samples; scheduled: the refresh events
   r.pair_checks = c.pair_checks;
   r.narrow_calls = c.narrow_calls;
   r.refreshes = c.refreshes;

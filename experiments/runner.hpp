@@ -1,9 +1,10 @@
 #pragma once
 // Runs one method at one timestep over a scene and measures it against exact ground
-// truth (definitions in docs/experiments.md). Each step is one call of the step pipeline
-// (ccd/pipeline/step_pipeline.hpp); this file only counts, times and matches:
+// truth (definitions in docs/experiments.md). The method's scheduler runs over the horizon
+// (ccd/pipeline/scheduler.hpp, built by the registry's factory); this file only counts, times
+// and matches:
 //  - samples t_k = k * dt (the product in double, never accumulated), every k >= 0 with
-//    t_k <= T (sample_count);
+//    t_k <= T (sample_count; fixed steps: ccd/pipeline/fixed_step_scheduler.hpp);
 //  - a discrete method (an Instant bound) checks overlap at each sample: an event is
 //    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
 //  - a continuous method checks each step [t_k, t_{k+1}] (and the last partial step): an
@@ -19,6 +20,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 
 #include <ccd/motion/trajectory.hpp>
+#include <ccd/pipeline/fixed_step_scheduler.hpp>
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/static_truth.hpp>
 
@@ -130,7 +132,7 @@ struct RunRecord {
 
 /// Number of samples t_k = k * dt (the double product) with t_k <= horizon: K + 1 where
 /// K is the largest k with k * dt <= horizon. 0 when dt is not positive and finite.
-std::uint64_t sample_count(double horizon, double dt);
+using ccd::sample_count;
 
 /// Runs `method` at timestep `dt`. Never throws for a valid input; a cancelled run
 /// returns with `cancelled` set.

@@ -81,6 +81,7 @@
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/static_index.hpp>
 #include <ccd/narrow/narrow_table.hpp>
+#include <ccd/pipeline/scheduler.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
 
 #include <atomic>
@@ -119,44 +120,9 @@ struct ScheduleOptions {
   /// With `recheck`: a chunk is the time in which the pair's distance may change by
   /// chunk x (r_a + r_b) at the speed bounds; 0: the rest of the common window.
   double chunk = 2.0;
-  /// Rigid scenes: shapes and spins, so that the narrow phase is looked up per pair of shape
-  /// kinds (as in StepPipeline); null for sphere scenes.
-  const RigidMotion* rigid = nullptr;
 };
 
-struct ScheduledContact {
-  BodyPair pair;
-  ContactResult contact;  ///< Hit or Overlapping: first contact in [from, to]
-  double from = 0.0;      ///< the narrow call's interval
-  double to = 0.0;
-};
-
-/// A body's contact with a static polygon, found by a narrow call over [from, to].
-struct ScheduledStaticContact {
-  StaticPair pair;
-  ContactResult contact;  ///< Hit or Overlapping: first contact in [from, to]
-  double from = 0.0;
-  double to = 0.0;
-};
-
-struct ScheduleStats {
-  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls, refinements whose
-                                   ///< refined boxes are disjoint, and speed re-checks)
-  std::uint64_t rechecks = 0;      ///< of those, speed re-checks (ScheduleOptions::recheck)
-  std::uint64_t passed = 0;        ///< of those, Possible
-  std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
-  std::uint64_t refreshes = 0;     ///< body bounds built (the first one of every body and the
-                                   ///< pair refinements' included)
-  std::uint64_t candidates = 0;    ///< pairs the broad phase reported, summed over updates
-  std::uint64_t batches = 0;       ///< distinct refresh events (times at which bounds were rebuilt)
-  // Scenery (0 without it); `refreshes` counts the static refinements' bounds (1 each).
-  std::uint64_t static_candidates = 0;    ///< (body, polygon) pairs the static index reported
-  std::uint64_t static_checks = 0;        ///< static tests (Bound::test_static calls, speed re-checks)
-  std::uint64_t static_passed = 0;        ///< of those, Possible
-  std::uint64_t static_narrow_calls = 0;  ///< body-polygon narrow-phase calls
-};
-
-class EarliestScheduler {
+class EarliestScheduler final : public Scheduler {
  public:
   /// `bound` and `scratch` are two instances of the same bound (`scratch` holds the pairs'
   /// refined bounds); `knowledge` is theirs; an Instant bound has no window
@@ -165,22 +131,16 @@ class EarliestScheduler {
                     std::unique_ptr<BroadPhase> broad, ScheduleOptions options,
                     const NarrowTable& table = narrow_table());
 
-  /// Runs over [0, horizon]; `contacts` is overwritten with every contact found, in the
-  /// order the narrow calls ran (a pair's contacts in time order). Adds stage times to `*times` when given. Stops early (returns
-  /// false) when `*cancel` becomes true. A scene that wraps around (motion.periodic()) takes
-  /// plain spheres only (std::invalid_argument with `options.rigid`) and no scenery.
-  /// Static contacts go to static_contacts().
-  bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
-           std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr,
-           const std::atomic<bool>* cancel = nullptr);
+  /// Runs over [0, in.horizon] (Scheduler::run); the contacts are in the order the narrow
+  /// calls ran (a pair's contacts in time order). A scene that wraps around
+  /// (motion.periodic()) takes plain spheres only (std::invalid_argument with `in.rigid`) and
+  /// no scenery. The run itself is ccd/pipeline/earliest_run.hpp.
+  bool run(const ScheduleInput& in, ScheduleResult& out) override;
 
   /// The scenery the bodies are checked against (indexed here; the polygons must outlive
   /// the scheduler). Empty: no static checks.
-  void set_scenery(std::span<const StaticPolygon> polygons);
-  /// The static contacts of the last run, in the order the narrow calls ran.
-  const std::vector<ScheduledStaticContact>& static_contacts() const { return static_contacts_; }
+  void set_scenery(std::span<const StaticPolygon> polygons) override;
 
-  const ScheduleStats& stats() const { return stats_; }
   const Bound& bound() const { return *bound_; }
 
  private:
@@ -191,10 +151,8 @@ class EarliestScheduler {
   ScheduleOptions options_;
   NarrowEntry narrow_;
   const NarrowTable* table_;
-  ScheduleStats stats_;
   std::span<const StaticPolygon> scenery_;
   StaticIndex static_index_;
-  std::vector<ScheduledStaticContact> static_contacts_;
 };
 
 }  // namespace ccd

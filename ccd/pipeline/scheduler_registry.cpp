@@ -1,10 +1,36 @@
 #include <ccd/pipeline/scheduler_registry.hpp>
 
+#include <ccd/pipeline/earliest_scheduler.hpp>
+#include <ccd/pipeline/fixed_step_scheduler.hpp>
+
 #include <stdexcept>
 #include <string>
 
 namespace ccd {
 namespace {
+
+const NarrowTable& table_of(const SchedulerParts& parts) { return parts.table ? *parts.table : narrow_table(); }
+
+std::unique_ptr<Scheduler> make_fixed(const SchedulerParts& parts, const ParameterSet& p) {
+  PipelineOptions options;
+  options.narrow_from_earliest = p.integer("narrow_from_earliest") != 0;
+  options.kinematic = p.integer("kinematic") != 0;
+  return std::make_unique<FixedStepScheduler>(parts.bound->make(), parts.bound->info->knowledge,
+                                              parts.broad_phase->make(), parts.dt, options, table_of(parts));
+}
+
+std::unique_ptr<Scheduler> make_earliest(const SchedulerParts& parts, const ParameterSet& p) {
+  ScheduleOptions options;
+  options.window = parts.dt;
+  options.stale = p.number("stale");
+  options.align = p.integer("align") != 0;
+  options.reach = p.number("reach");
+  options.refresh_bodies = p.integer("refresh_bodies") != 0;
+  options.recheck = p.integer("recheck") != 0;
+  options.chunk = p.number("chunk");
+  return std::make_unique<EarliestScheduler>(parts.bound->make(), parts.bound->make(), parts.bound->info->knowledge,
+                                             parts.broad_phase->make(), options, table_of(parts));
+}
 
 constexpr ParameterSpec kFixedParameters[] = {
     {"narrow_from_earliest", 0.0,
@@ -43,10 +69,11 @@ constexpr ParameterSpec kEarliestParameters[] = {
 };
 
 const SchedulerInfo kSchedulers[] = {
-    {"fixed", "fixed steps of dt: every bound, every candidate pair, every step", kFixedParameters},
+    {"fixed", "fixed steps of dt: every bound, every candidate pair, every step", kFixedParameters,
+     &make_fixed},
     {"earliest",
      "per-pair checks at the earliest possible contact, per-body windows of at most dt refreshed one by one",
-     kEarliestParameters},
+     kEarliestParameters, &make_earliest},
 };
 
 std::string valid_names() {
@@ -66,6 +93,16 @@ std::string valid_options(const SchedulerInfo& info) {
 std::span<const SchedulerInfo> scheduler_registry() { return kSchedulers; }
 
 bool SchedulerSpec::earliest() const { return info && info->name == "earliest"; }
+
+std::unique_ptr<Scheduler> SchedulerSpec::make(const SchedulerParts& parts) const {
+  if (!info || !parts.bound || !parts.bound->info || !parts.broad_phase || !parts.broad_phase->info)
+    throw std::invalid_argument("a scheduler needs a bound and a broad phase");
+  try {
+    return info->factory(parts, options);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument("scheduler '" + std::string(info->name) + "': " + e.what());
+  }
+}
 
 SchedulerSpec parse_scheduler(std::string_view spec) {
   const std::size_t colon = spec.find(':');

@@ -1,9 +1,9 @@
 #pragma once
 // One step of collision detection as a library call: prepare the bound's boxes -> broad
-// phase -> the bound's pair test -> narrow phase, each stage timed. The runner
-// (experiments/runner.cpp), the README example and kernels_bench all call this; the
-// runner only measures and keeps the ground-truth bookkeeping. docs/architecture.md
-// draws the data path.
+// phase -> the bound's pair test -> narrow phase, each stage timed. Fixed steps over a
+// horizon (ccd/pipeline/fixed_step_scheduler.hpp, what the runner runs), the README
+// example and kernels_bench all call this.
+// docs/architecture.md draws the data path.
 //
 // A step is [ctx.t0, ctx.t1] (a continuous method: a space-time bound, the narrow phase's
 // first contact over the step) or the sample time ctx.t0 == ctx.t1 (a discrete method:

@@ -13,6 +13,7 @@
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/pipeline/earliest_scheduler.hpp>
+#include <tests/ccd/pipeline/earliest_under_test.hpp>
 #include <ccd/truth/rigid_static_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -51,7 +52,7 @@ constexpr Mode kModes[] = {
     {"recheck=1", 0.25, false, 0.0, true},        {"recheck=1,reach=2", 0.25, false, 2.0, true},
 };
 
-ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, const Mode& m,
+ccd::test::EarliestUnderTest make(const std::string& bound, const std::string& broad, double dt, const Mode& m,
                             const ccd::RigidMotion* rigid = nullptr) {
   const ccd::BoundSpec b = ccd::parse_bound(bound);
   ccd::ScheduleOptions o;
@@ -60,8 +61,8 @@ ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, 
   o.refresh_bodies = m.refresh_bodies;
   o.reach = m.reach;
   o.recheck = m.recheck;
-  o.rigid = rigid;
-  return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
+  return ccd::test::EarliestUnderTest(std::make_unique<ccd::EarliestScheduler>(
+      b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o), rigid);
 }
 
 struct Outcome {
@@ -174,7 +175,7 @@ TEST_CASE("the earliest scheduler misses no body-static event on the dyadic case
         for (const double dt : {0.25, 0.125, 0.3})
           for (const Mode& m : kModes) {
             INFO("offset " << offset << " " << bound << "/" << broad << "@earliest:" << m.name << " dt " << dt);
-            ccd::EarliestScheduler sched = make(bound, broad, dt, m);
+            ccd::test::EarliestUnderTest sched = make(bound, broad, dt, m);
             sched.set_scenery(scene.scenery);
             std::vector<ccd::ScheduledContact> contacts;
             REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
@@ -196,7 +197,7 @@ TEST_CASE("the earliest scheduler misses no body-static event on the dyadic case
 TEST_CASE("the earliest scheduler without scenery makes no static check", "[pipeline][scheduler][scenery]") {
   const ccd::Scene scene = adversarial_scene(Vec3::Zero());
   const ccd::Trajectories traj(scene);
-  ccd::EarliestScheduler sched = make("capsule", "grid", 0.25, kModes[0]);
+  ccd::test::EarliestUnderTest sched = make("capsule", "grid", 0.25, kModes[0]);
   std::vector<ccd::ScheduledContact> contacts;
   REQUIRE(sched.run(traj, scene.horizon, 0.0, scene.box, contacts));
   CHECK(sched.static_contacts().empty());
@@ -216,7 +217,7 @@ TEST_CASE("the earliest scheduler finds a ball's floor contact from the check, n
   s.bodies.push_back(ccd::test::body(0.25, {0.5, 0.5, 1}, {0, 0, -2}));
   s.scenery.push_back(ccd::test::square_z(-4, -4, 0, 8));
   const ccd::Trajectories traj(s);
-  ccd::EarliestScheduler sched = make("capsule", "brute", 1.0, kModes[1]);
+  ccd::test::EarliestUnderTest sched = make("capsule", "brute", 1.0, kModes[1]);
   sched.set_scenery(s.scenery);
   std::vector<ccd::ScheduledContact> contacts;
   REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
@@ -244,7 +245,7 @@ TEST_CASE("the earliest scheduler misses no rigid body-static event on the hand-
     for (const double dt : {0.25, 0.5, 1.0 / 3.0})  // 1/4 and 1/2 put window ends on 1/2, 1, 3/2, 2
       for (const Mode& m : {kModes[0], kModes[3], kModes[4], kModes[6]}) {
         INFO(bound << "/grid@earliest:" << m.name << " dt " << dt);
-        ccd::EarliestScheduler sched = make(bound, "grid", dt, m, &motion);
+        ccd::test::EarliestUnderTest sched = make(bound, "grid", dt, m, &motion);
         sched.set_scenery(scene.scenery);
         std::vector<ccd::ScheduledContact> contacts;
         REQUIRE(sched.run(traj, scene.horizon, scene.max_acceleration(), scene.box, contacts));
@@ -298,7 +299,7 @@ TEST_CASE("the earliest scheduler misses no body-static event in generated scene
         for (const Mode& m : {kModes[0], kModes[1], kModes[3], kModes[5], kModes[7]}) {
           if (std::string(broad) == "sap" && std::string(m.name) != "default") continue;
           INFO(c.generator << " " << bound << "/" << broad << "@earliest:" << m.name << " dt " << dt);
-          ccd::EarliestScheduler sched = make(bound, broad, dt, m, rigid ? &*motion : nullptr);
+          ccd::test::EarliestUnderTest sched = make(bound, broad, dt, m, rigid ? &*motion : nullptr);
           sched.set_scenery(scene.scenery);
           std::vector<ccd::ScheduledContact> contacts;
           REQUIRE(sched.run(traj, scene.horizon, scene.max_acceleration(), scene.box, contacts));
@@ -318,7 +319,7 @@ TEST_CASE("the earliest scheduler refuses scenery in a scene that wraps around",
   s.bodies.push_back(ccd::test::body(0.25, {1, 1, 1}, {1, 0, 0}));
   const ccd::Trajectories traj(s);
   const std::vector<ccd::StaticPolygon> floor{ccd::test::square_z(0, 0, 0.5, 4)};
-  ccd::EarliestScheduler sched = make("capsule", "grid", 0.25, kModes[0]);
+  ccd::test::EarliestUnderTest sched = make("capsule", "grid", 0.25, kModes[0]);
   sched.set_scenery(floor);
   std::vector<ccd::ScheduledContact> contacts;
   CHECK_THROWS_AS(sched.run(traj, s.horizon, 0.0, s.box, contacts), std::invalid_argument);

@@ -8,6 +8,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/pipeline/earliest_scheduler.hpp>
+#include <tests/ccd/pipeline/earliest_under_test.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <experiments/generators/registry.hpp>
 
@@ -25,7 +26,7 @@ using ccd::Vec3;
 
 namespace {
 
-ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
+ccd::test::EarliestUnderTest make(const std::string& bound, const std::string& broad, double dt, double stale = 0.25,
                             bool align = true, bool refresh_bodies = false, double reach = 0.0, bool recheck = false,
                             double chunk = 2.0) {
   const ccd::BoundSpec b = ccd::parse_bound(bound);
@@ -37,7 +38,8 @@ ccd::EarliestScheduler make(const std::string& bound, const std::string& broad, 
   o.reach = reach;
   o.recheck = recheck;
   o.chunk = chunk;
-  return ccd::EarliestScheduler(b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o);
+  return ccd::test::EarliestUnderTest(std::make_unique<ccd::EarliestScheduler>(
+      b.make(), b.make(), b.info->knowledge, ccd::parse_broad_phase(broad).make(), o));
 }
 
 // Events (enter > 0) with no contact of their pair whose narrow interval contains enter.
@@ -79,7 +81,7 @@ TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipe
         const double reach = mode >= 3 ? 1.0 : 0.0;
         for (const double dt : {0.05, 0.3}) {  // 0.3 does not divide the horizon
           INFO(s.generator << " " << bound << " stale " << stale << " mode " << mode << " dt " << dt);
-          ccd::EarliestScheduler sched = make(bound, "grid", dt, stale, align, refresh_bodies, reach);
+          ccd::test::EarliestUnderTest sched = make(bound, "grid", dt, stale, align, refresh_bodies, reach);
           std::vector<ccd::ScheduledContact> contacts;
           REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
           CHECK(undetected(events, contacts, 1e-9 * scene.horizon) == 0);
@@ -116,7 +118,7 @@ TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipel
   for (const char* bound : {"horn:4", "capsule"}) {
    for (const bool refresh_bodies : {false, true}) {
     INFO(bound << " refresh_bodies " << refresh_bodies);
-    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.25, true, refresh_bodies);
+    ccd::test::EarliestUnderTest sched = make(bound, "brute", 1.0, 0.25, true, refresh_bodies);
     std::vector<ccd::ScheduledContact> contacts;
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     REQUIRE(contacts.size() == 1);
@@ -152,7 +154,7 @@ TEST_CASE("speed-adapted windows: fast bodies refresh often, slow ones once per 
     for (const char* broad : {"grid", "sap", "brute"}) {
       for (const bool align : {true, false}) {
         INFO(bound << " " << broad << " align " << align);
-        ccd::EarliestScheduler sched = make(bound, broad, 1.0, 1.0, align, false, 2.0);
+        ccd::test::EarliestUnderTest sched = make(bound, broad, 1.0, 1.0, align, false, 2.0);
         std::vector<ccd::ScheduledContact> contacts;
         REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
         // Contact begins exactly at a window boundary of body 0: found from the window
@@ -183,7 +185,7 @@ TEST_CASE("the refinement terminates on a grazing pair", "[pipeline][scheduler]"
   for (const char* bound : {"horn:4", "horn_sat:4", "capsule", "swept_aabb", "enclosing_sphere"}) {
    for (const bool refresh_bodies : {false, true}) {
     INFO(bound << " refresh_bodies " << refresh_bodies);
-    ccd::EarliestScheduler sched = make(bound, "brute", 1.0, 0.01, true, refresh_bodies);
+    ccd::test::EarliestUnderTest sched = make(bound, "brute", 1.0, 0.01, true, refresh_bodies);
     std::vector<ccd::ScheduledContact> contacts;
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     REQUIRE(contacts.size() == 1);
@@ -306,7 +308,7 @@ TEST_CASE("speed re-checks miss nothing on adversarial dyadic scenes", "[pipelin
         for (const double chunk : {0.0, 2.0, 1.0 / 16.0}) {
           for (const double dt : {2.0, 0.25, 0.3}) {
             INFO(c.name << ": " << bound << "/" << broad << " chunk " << chunk << " dt " << dt);
-            ccd::EarliestScheduler sched = make(bound, broad, dt, 0.25, true, false, 0.0, true, chunk);
+            ccd::test::EarliestUnderTest sched = make(bound, broad, dt, 0.25, true, false, 0.0, true, chunk);
             std::vector<ccd::ScheduledContact> contacts;
             REQUIRE(sched.run(traj, c.scene.horizon, A, c.scene.box, contacts));
             CHECK(undetected(events, contacts, 1e-9 * c.scene.horizon) == 0);
@@ -343,7 +345,7 @@ TEST_CASE("speed re-checks: a close pair moving in parallel costs a bounded numb
   // enclosing spheres of the window meet, so the pair passes and the re-checks do the work.
   for (const double chunk : {2.0, 8.0}) {
     INFO("chunk " << chunk);
-    ccd::EarliestScheduler sched = make("enclosing_sphere", "brute", 1.0, 0.25, true, false, 0.0, true, chunk);
+    ccd::test::EarliestUnderTest sched = make("enclosing_sphere", "brute", 1.0, 0.25, true, false, 0.0, true, chunk);
     std::vector<ccd::ScheduledContact> contacts;
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     CHECK(contacts.empty());
@@ -364,7 +366,7 @@ TEST_CASE("speed re-checks: far pairs skip ahead, the narrow phase covers only t
   s.bodies.push_back(ccd::test::body(0.5, Vec3(0, 0, 0), Vec3(2, 0, 0)));
   s.bodies.push_back(ccd::test::body(0.5, Vec3(4, 0, 0), Vec3(-2, 0, 0)));
   const ccd::Trajectories traj(s);
-  ccd::EarliestScheduler sched = make("capsule", "brute", 1.0, 0.25, true, false, 0.0, true, 2.0);
+  ccd::test::EarliestUnderTest sched = make("capsule", "brute", 1.0, 0.25, true, false, 0.0, true, 2.0);
   std::vector<ccd::ScheduledContact> contacts;
   REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
   REQUIRE(contacts.size() == 1);
@@ -467,7 +469,7 @@ TEST_CASE("the earliest scheduler misses no event in a scene that wraps around, 
       for (const Mode& m : modes) {
         for (const std::string& broad : broads) {
           INFO(c.name << " dt " << c.dt << " " << bound << "/" << broad << " " << m.name);
-          ccd::EarliestScheduler sched =
+          ccd::test::EarliestUnderTest sched =
               make(bound, broad, c.dt, m.stale, m.align, m.refresh_bodies, m.reach, m.recheck, m.chunk);
           std::vector<ccd::ScheduledContact> contacts;
           REQUIRE(sched.run(traj, c.scene.horizon, A, c.scene.box, contacts));
@@ -497,7 +499,7 @@ TEST_CASE("the earliest scheduler on a wrapped gas: every broad phase, images co
   for (const ccd::BroadPhaseInfo& broad : ccd::broad_phase_registry()) {
     for (const double reach : {0.0, 1.0}) {
       INFO(broad.name << " reach " << reach);
-      ccd::EarliestScheduler sched = make("capsule", std::string(broad.name), 0.05, 0.25, true, false, reach);
+      ccd::test::EarliestUnderTest sched = make("capsule", std::string(broad.name), 0.05, 0.25, true, false, reach);
       std::vector<ccd::ScheduledContact> contacts;
       REQUIRE(sched.run(traj, scene.horizon, 0.0, scene.box, contacts));
       check_wrapped(events, contacts, 1e-9 * scene.horizon);
@@ -544,8 +546,8 @@ TEST_CASE("checks run in rounds as they are made find what checks queued at thei
         for (const double dt : {0.05, 0.3}) {
           INFO(scene.bodies.size() << " bodies, wraps " << scene.wraps() << ", " << bound << " reach " << reach
                                    << " dt " << dt);
-          ccd::EarliestScheduler rounds = make(bound, "grid", dt, 1.0, true, false, reach);
-          ccd::EarliestScheduler queued = make(bound, "grid", dt, 1.0, true, true, reach);
+          ccd::test::EarliestUnderTest rounds = make(bound, "grid", dt, 1.0, true, false, reach);
+          ccd::test::EarliestUnderTest queued = make(bound, "grid", dt, 1.0, true, true, reach);
           std::vector<ccd::ScheduledContact> a, b;
           ccd::StepTimes times;
           REQUIRE(rounds.run(traj, scene.horizon, A, scene.box, a, &times));
