@@ -6,6 +6,7 @@
 // with windows of dt, with speed-adapted ones (`reach`) and with speed re-checks (`recheck`).
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
+#include "method_cover.hpp"
 
 #include <experiments/generators/registry.hpp>
 
@@ -42,7 +43,7 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
     names.push_back(m + ":reach=1");  // speed-adapted windows: the broad phases' incremental updates
     names.push_back(m + ":recheck=1");  // speed re-checks and chunked narrow calls
   }
-  for (const std::string& name : names) {
+  for (const std::string& name : ccdlab::test::sanitizer_cover(names)) {
     INFO(c.generator << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
     CHECK(r.events == truth.events().size());

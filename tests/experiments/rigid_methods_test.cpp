@@ -3,6 +3,7 @@
 // passes. Spinning bodies tunnel by rotation alone here, so sampling must miss some.
 #include "../../experiments/method.hpp"
 #include "../../experiments/runner.hpp"
+#include "method_cover.hpp"
 
 #include <ccd/truth/rigid_truth.hpp>
 
@@ -109,7 +110,7 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   for (const char* scheduled :
        {"capsule/grid@earliest", "horn:4/sap@earliest", "swept_aabb/brute@earliest", "obb_sat:4/sap@earliest"})
     names.emplace_back(scheduled);
-  for (const std::string& name : names) {
+  for (const std::string& name : ccdlab::test::sanitizer_cover(names)) {
     INFO(c.name << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
     CHECK(r.events == truth.events().size());
