@@ -5,7 +5,7 @@
 
 #include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #include "runner.hpp"
 
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <algorithm>
 #include <cstdint>

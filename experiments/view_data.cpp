@@ -7,7 +7,7 @@
 #include <ccd/io/json_reader.hpp>
 #include <ccd/motion/rotation.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/shape/shape_kind.hpp>
 

@@ -1,7 +1,7 @@
 #include "work_estimate.hpp"
 
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <algorithm>
 #include <array>

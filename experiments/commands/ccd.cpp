@@ -11,7 +11,7 @@
 #include <cloth/io/query_file.hpp>
 #include <ccd/io/utf8_text.hpp>
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
 
 #include <algorithm>

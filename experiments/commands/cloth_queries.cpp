@@ -11,7 +11,7 @@
 #include <cloth/truth/mesh_truth_file.hpp>
 #include <ccd/io/utf8_text.hpp>
 #include <ccd/io/output_directory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
 #include <ccd/util/parallel_for.hpp>
 

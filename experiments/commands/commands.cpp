@@ -1,6 +1,6 @@
 #include "command.hpp"
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccdlab_git_hash.hpp>
 
 #include <algorithm>

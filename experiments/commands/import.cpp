@@ -7,7 +7,7 @@
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/recorded_frames.hpp>
 #include <ccd/scene/scene_io.hpp>
 

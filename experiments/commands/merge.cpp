@@ -6,7 +6,7 @@
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 
 #include <iostream>
 #include <new>

@@ -13,7 +13,7 @@
 #include <cloth/mesh_ccd/mesh_ccd.hpp>
 #include <cloth/mesh_ccd/mesh_ccd_json.hpp>
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
 #include <ccd/util/parallel_for.hpp>
 

@@ -11,7 +11,7 @@
 #include <cloth/sim/cloth_mesh.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
 #include <ccd/io/output_directory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/util/integer_text.hpp>
 
 #include <algorithm>

@@ -11,7 +11,7 @@
 #include <ccd/io/json_reader.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/truth/truth_io.hpp>
 #include <ccd/util/integer_text.hpp>
 #include <ccd/util/parallel_for.hpp>

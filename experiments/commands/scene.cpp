@@ -2,7 +2,7 @@
 #include "command.hpp"
 
 #include <ccd/io/atomic_file.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <experiments/generators/registry.hpp>
 

@@ -7,7 +7,7 @@
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/motion/rigid_motion.hpp>

@@ -9,7 +9,7 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_binary.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/truth_io.hpp>

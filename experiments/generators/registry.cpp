@@ -1,7 +1,7 @@
 #include <experiments/generators/registry.hpp>
 #include <ccd/util/nearest_name.hpp>
 
-#include <ccd/scene/input_error.hpp>
+#include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
 
 #include <stdexcept>
