@@ -18,6 +18,7 @@ void add_error_fields(json& j, const EventError& err) {
   if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
   if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
   if (err.grazing) j["grazing"] = true;
+  if (err.undecided) j["undecided"] = true;
 }
 
 json event_json(const TruthFile& t, std::size_t i) {
@@ -41,6 +42,7 @@ EventError read_error_fields(const JsonReader& r, const json& e, const std::stri
   if (err.enter_error < 0.0) r.fail(p + ".enter_error", "must be >= 0");
   if (err.exit_error < 0.0) r.fail(p + ".exit_error", "must be >= 0");
   err.grazing = r.optional_bool(e, "grazing", p, false);
+  err.undecided = r.optional_bool(e, "undecided", p, err.grazing);
   return err;
 }
 
