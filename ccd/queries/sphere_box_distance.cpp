@@ -42,6 +42,8 @@ double point_box(const Vec3& q, const Vec3& h, bool& exact) {
     exact = exact && exact_difference(std::fabs(q[i]), h[i], e[i]);
   }
   if (e.maxCoeff() <= 0.0) return e.maxCoeff();
+  // Outside one face's slab only: the distance is that excess itself, no root.
+  if ((e.array() > 0.0).count() == 1) return e.maxCoeff();
   double s = 0.0;
   for (int i = 0; i < 3; ++i) {
     const double x = std::max(e[i], 0.0);

@@ -18,7 +18,8 @@ void add_error_fields(json& j, const EventError& err) {
   if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
   if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
   if (err.grazing) j["grazing"] = true;
-  if (err.undecided) j["undecided"] = true;
+  // Read as `grazing` when absent: written whenever that would read back wrong.
+  if (err.undecided || err.grazing) j["undecided"] = err.undecided;
 }
 
 json event_json(const TruthFile& t, std::size_t i) {
