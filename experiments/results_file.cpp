@@ -125,7 +125,13 @@ void validate_results(const json& j, const std::string& file) {
 
   const json& records = r.require(j, "records", "");
   if (!records.is_array()) r.fail("records", "must be an array");
-  static const json schema = to_json(RunRecord{});
+  // Records written before `undecided` and `static_undecided` existed lack them (read as 0).
+  static const json schema = [] {
+    json s = to_json(RunRecord{});
+    s.erase("undecided");
+    s.erase("static_undecided");
+    return s;
+  }();
   std::vector<bool> seen(jobs, false);
   std::uint64_t owned = 0;
   for (std::uint64_t k = 0; k < jobs; ++k) owned += k % count == index - 1;
@@ -149,11 +155,15 @@ void validate_results(const json& j, const std::string& file) {
       r.fail(p + ".dt", "must be " + json(e.dt[job % e.dt.size()]).dump() + ", the dt of job " + std::to_string(job));
     if (rec["events"].get<std::uint64_t>() != events)
       r.fail(p + ".events", "must equal truth.events = " + std::to_string(events));
-    // Events in progress at t = 0 are counted apart, in initial_contacts.
+    // Events in progress at t = 0 are counted apart, in initial_contacts, and the events the
+    // truth could not decide in undecided.
+    const std::uint64_t undecided =
+        rec.contains("undecided") ? r.count(rec["undecided"], p + ".undecided", kMaxCount) : 0;
     const std::uint64_t initial = rec["initial_contacts"].get<std::uint64_t>();
-    if (initial > events || rec["detected"].get<std::uint64_t>() > events - initial ||
-        rec["missed"].get<std::uint64_t>() != events - initial - rec["detected"].get<std::uint64_t>())
-      r.fail(p + ".missed", "initial_contacts + detected + missed must equal events");
+    if (undecided > events || initial > events - undecided ||
+        rec["detected"].get<std::uint64_t>() > events - undecided - initial ||
+        rec["missed"].get<std::uint64_t>() != events - undecided - initial - rec["detected"].get<std::uint64_t>())
+      r.fail(p + ".missed", "undecided + initial_contacts + detected + missed must equal events");
   }
 }
 

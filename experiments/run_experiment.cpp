@@ -185,6 +185,8 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.rigid = rigid ? &*rigid : nullptr;
   in.truth = &truth;
   in.truth_error = truth_error;
+  in.errors = body_truth.errors;
+  in.static_errors = static_truth.static_errors;
   in.static_events = static_events;
   in.acceleration_bound = e.acceleration_bound >= 0.0 ? e.acceleration_bound : scene.max_acceleration();
   in.repeats = e.repeats;
@@ -219,6 +221,13 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
                   {"source", options.truth ? options.truth_file : std::string("computed")},
                   {"scene_sha256", ccd::scene_digest(scene)}};
   if (!scene.scenery.empty()) out["truth"]["static_events"] = static_events.size();
+  // Events the truth could not decide: counted apart in every record (`undecided`).
+  const auto undecided = [](const std::vector<ccd::EventError>& errors) {
+    return static_cast<std::size_t>(std::count_if(errors.begin(), errors.end(), [](const ccd::EventError& x) { return x.undecided; }));
+  };
+  if (const std::size_t u = undecided(body_truth.errors)) out["truth"]["undecided_events"] = u;
+  if (const std::size_t u = undecided(static_truth.static_errors); u && !scene.scenery.empty())
+    out["truth"]["static_undecided_events"] = u;
   out["environment"] = environment_json(options.threads);
   out["shard"] = {{"index", options.shard.index}, {"count", options.shard.count}, {"jobs", total_jobs}};
   json recs = json::array();

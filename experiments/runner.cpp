@@ -254,6 +254,11 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   // A certified (rigid) truth widens it by its largest error.
   const double slack = std::max(1e-9 * T, in.truth_error);
   for (std::size_t e = 0; e < events.size(); ++e) {
+    if (!in.errors.empty() && in.errors[e].undecided) {
+      // The truth could not decide it: counted apart, never a miss.
+      ++r.undecided;
+      continue;
+    }
     if (events[e].enter == 0.0) {
       // In progress at t = 0: counted apart, outside misses, lag and penetration.
       ++r.initial_contacts;
@@ -274,15 +279,17 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
       if (first * dt < events[e].exit - slack && first * dt <= T) ++r.self_check_undetected;
     }
   }
-  r.missed = r.events - r.initial_contacts - r.detected;
+  r.missed = r.events - r.initial_contacts - r.detected - r.undecided;
   r.static_events = in.static_events.size();
   for (std::size_t e = 0; e < in.static_events.size(); ++e) {
-    if (in.static_events[e].enter == 0.0)
+    if (!in.static_errors.empty() && in.static_errors[e].undecided)
+      ++r.static_undecided;
+    else if (in.static_events[e].enter == 0.0)
       ++r.static_initial_contacts;
     else if (!std::isnan(c.static_lag[e]))
       ++r.static_detected;
   }
-  r.static_missed = r.static_events - r.static_initial_contacts - r.static_detected;
+  r.static_missed = r.static_events - r.static_initial_contacts - r.static_detected - r.static_undecided;
   std::sort(r.missed_events.begin(), r.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
     return x.enter != y.enter ? x.enter < y.enter : x.a != y.a ? x.a < y.a : x.b < y.b;
   });
@@ -348,7 +355,10 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"initial_contacts", r.initial_contacts},
           {"detected", r.detected},
           {"missed", r.missed},
-          {"missed_fraction", r.events > r.initial_contacts ? double(r.missed) / double(r.events - r.initial_contacts) : 0.0},
+          {"missed_fraction", r.events > r.initial_contacts + r.undecided
+                                  ? double(r.missed) / double(r.events - r.initial_contacts - r.undecided)
+                                  : 0.0},
+          {"undecided", r.undecided},
           {"candidates", r.candidates},
           {"bound_candidates", r.bound_candidates},
           {"confirmed", r.confirmed},
@@ -372,6 +382,7 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"static_initial_contacts", r.static_initial_contacts},
           {"static_detected", r.static_detected},
           {"static_missed", r.static_missed},
+          {"static_undecided", r.static_undecided},
           {"static_candidates", r.static_candidates},
           {"static_bound_candidates", r.static_bound_candidates},
           {"static_confirmed", r.static_confirmed},

@@ -23,6 +23,7 @@
 #include <ccd/pipeline/fixed_step_scheduler.hpp>
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/static_truth.hpp>
+#include <ccd/truth/truth_io.hpp>
 
 #include <atomic>
 #include <cstdint>
@@ -46,6 +47,10 @@ struct RunInput {
   /// Seconds: the truth's largest certified error (enter_error, exit_error), widening the
   /// window in which a detection is matched to an event; 0 for an exact truth.
   double truth_error = 0.0;
+  /// One entry per truth event (static event), or empty when every one is exact: events
+  /// flagged `undecided` are counted apart (RunRecord::undecided), never detected or missed.
+  std::span<const ccd::EventError> errors;
+  std::span<const ccd::EventError> static_errors;
   double acceleration_bound = 0.0;          ///< A given to Bounded bounds
   int repeats = 1;                          ///< timing repeats; times are medians
   const std::atomic<bool>* cancel = nullptr;  ///< checked once per step
@@ -76,6 +81,9 @@ struct RunRecord {
   std::uint64_t initial_contacts = 0;  ///< of those, events in progress at t = 0 (enter == 0)
   std::uint64_t detected = 0;  ///< of the other events, those detected
   std::uint64_t missed = 0;    ///< of the other events, those missed
+  /// Of the events, those the truth could not decide (ccd::EventError::undecided): counted
+  /// apart, neither detected nor missed, and outside initial_contacts.
+  std::uint64_t undecided = 0;
   std::uint64_t candidates = 0;        ///< pairs reported by the broad phase, summed over steps
   std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
   std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
@@ -117,6 +125,7 @@ struct RunRecord {
   std::uint64_t static_initial_contacts = 0;
   std::uint64_t static_detected = 0;
   std::uint64_t static_missed = 0;
+  std::uint64_t static_undecided = 0;
   std::uint64_t static_candidates = 0;
   std::uint64_t static_bound_candidates = 0;
   std::uint64_t static_confirmed = 0;

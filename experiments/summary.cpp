@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -26,6 +27,7 @@ struct Table {
   std::vector<double> dts;  // every dt of the records, largest first
   std::vector<double> hz;   // parallel: the frequency when the experiment gave it so, else 0
   std::vector<MethodRow> rows;
+  std::uint64_t undecided = 0;  // events (body-body and static) the truth could not decide
 };
 
 std::string number(double x, const char* format) {
@@ -58,6 +60,7 @@ Table build(const json& results) {
     }
     MethodRow& row = it->second;
     row.conservative = r.value("conservative", false);
+    t.undecided = std::max(t.undecided, r.value("undecided", std::uint64_t{0}) + r.value("static_undecided", std::uint64_t{0}));
     row.missed_fraction[dt] = r.at("missed_fraction").get<double>();
     if (r.at("missed").get<std::uint64_t>() == 0) {
       row.largest_zero_miss_dt = std::max(row.largest_zero_miss_dt, dt);
@@ -105,10 +108,19 @@ std::vector<std::vector<std::string>> cells(const Table& t) {
 
 const char* kFootnote = "* conservative as it ran (a continuous method whose guarantee held: zero misses expected)";
 
+// The line on the events the truth could not decide, or nothing when there are none.
+std::string undecided_line(const Table& t) {
+  if (t.undecided == 0) return std::string();
+  return std::to_string(t.undecided) +
+         " undecided events (the ground truth could certify neither a contact nor a separation) are counted apart: "
+         "neither detected nor missed";
+}
+
 }  // namespace
 
 std::string summary_text(const json& results) {
-  const auto c = cells(build(results));
+  const Table t = build(results);
+  const auto c = cells(t);
   std::vector<std::size_t> width(c.front().size(), 0);
   for (const auto& line : c)
     for (std::size_t k = 0; k < line.size(); ++k) width[k] = std::max(width[k], line[k].size());
@@ -122,11 +134,13 @@ std::string summary_text(const json& results) {
     out += "\n";
   }
   out += std::string(kFootnote) + "\n";
+  if (const std::string u = undecided_line(t); !u.empty()) out += u + "\n";
   return out;
 }
 
 std::string summary_markdown(const json& results) {
-  const auto c = cells(build(results));
+  const Table t = build(results);
+  const auto c = cells(t);
   std::string out = "# Summary: " + results.at("experiment").value("name", std::string("experiment")) + "\n\n";
   const json& scene = results.at("scene");
   if (results.value("format", std::string()) == "ccdlab-cloth-results/1")  // a cloth experiment
@@ -155,6 +169,7 @@ std::string summary_markdown(const json& results) {
     }
   }
   out += "\n\\" + std::string(kFootnote) + "\n";
+  if (const std::string u = undecided_line(t); !u.empty()) out += "\n" + u + ".\n";
   return out;
 }
 

@@ -1,9 +1,9 @@
 // ccdlab.truth(scene) and ccdlab.load_truth(path): the contact intervals as numpy arrays,
 // for every kind of scene (ccd/truth/truth.hpp: the call `ccdlab truth` makes). The arrays
 // a, b, enter, exit are strided views of one event table (no copy); enter_error,
-// exit_error and grazing exist when the truth has error fields (else None); static_body,
+// exit_error, grazing and undecided exist when the truth has error fields (else None); static_body,
 // static_polygon, static_enter, static_exit (and static_enter_error, static_exit_error,
-// static_grazing when certified) hold the body-scenery events of a scene with scenery.
+// static_grazing, static_undecided when certified) hold the body-scenery events of a scene with scenery.
 #include "bindings.hpp"
 #include "interruptible.hpp"
 
@@ -27,28 +27,31 @@ struct PyTruth {
   std::shared_ptr<ccd::TruthFile> file;
   py::object owner;  ///< keeps `file` alive for the views
   py::array a, b, enter, exit;
-  py::object enter_error = py::none(), exit_error = py::none(), grazing = py::none();
+  py::object enter_error = py::none(), exit_error = py::none(), grazing = py::none(), undecided = py::none();
   /// Body-scenery events (None without scenery): body, polygon (uint32), enter, exit (s),
   /// and their error fields (None when every static event is exact).
   py::object static_body = py::none(), static_polygon = py::none(), static_enter = py::none(),
              static_exit = py::none();
-  py::object static_enter_error = py::none(), static_exit_error = py::none(), static_grazing = py::none();
+  py::object static_enter_error = py::none(), static_exit_error = py::none(), static_grazing = py::none(),
+             static_undecided = py::none();
 };
 
-// The error fields of `errors` as arrays (enter_error, exit_error, grazing).
+// The error fields of `errors` as arrays (enter_error, exit_error, grazing, undecided).
 void error_arrays(const std::vector<ccd::EventError>& errors, py::object& enter_error, py::object& exit_error,
-                  py::object& grazing) {
+                  py::object& grazing, py::object& undecided) {
   const auto n = static_cast<py::ssize_t>(errors.size());
   std::vector<double> enter, exit;
-  py::array_t<bool> g(n);
+  py::array_t<bool> g(n), u(n);
   for (std::size_t i = 0; i < errors.size(); ++i) {
     enter.push_back(errors[i].enter_error);
     exit.push_back(errors[i].exit_error);
     g.mutable_at(static_cast<py::ssize_t>(i)) = errors[i].grazing;
+    u.mutable_at(static_cast<py::ssize_t>(i)) = errors[i].undecided;
   }
   enter_error = owning_array(std::move(enter), {n});
   exit_error = owning_array(std::move(exit), {n});
   grazing = g;
+  undecided = u;
 }
 
 void static_arrays(const ccd::Truth& truth, PyTruth& t) {
@@ -66,7 +69,8 @@ void static_arrays(const ccd::Truth& truth, PyTruth& t) {
   t.static_polygon = owning_array(std::move(polygon), {n});
   t.static_enter = owning_array(std::move(enter), {n});
   t.static_exit = owning_array(std::move(exit), {n});
-  if (!truth.static_errors.empty()) error_arrays(truth.static_errors, t.static_enter_error, t.static_exit_error, t.static_grazing);
+  if (!truth.static_errors.empty()) error_arrays(truth.static_errors, t.static_enter_error, t.static_exit_error, t.static_grazing,
+                 t.static_undecided);
 }
 
 PyTruth make_truth(ccd::TruthFile truth) {
@@ -87,7 +91,7 @@ PyTruth make_truth(ccd::TruthFile truth) {
       py::array(py::dtype::of<double>(), {n}, {stride}, base + offsetof(ccd::ContactEvent, exit), t.owner);
   for (py::array* view : {&t.a, &t.b, &t.enter, &t.exit})  // read-only views of the table
     view->attr("flags").attr("writeable") = false;
-  if (!t.file->errors.empty()) error_arrays(t.file->errors, t.enter_error, t.exit_error, t.grazing);
+  if (!t.file->errors.empty()) error_arrays(t.file->errors, t.enter_error, t.exit_error, t.grazing, t.undecided);
   static_arrays(*t.file, t);
   return t;
 }
@@ -105,6 +109,7 @@ void bind_truth(py::module_& m) {
       .def_readonly("enter_error", &PyTruth::enter_error)
       .def_readonly("exit_error", &PyTruth::exit_error)
       .def_readonly("grazing", &PyTruth::grazing)
+      .def_readonly("undecided", &PyTruth::undecided)
       .def_readonly("static_body", &PyTruth::static_body)
       .def_readonly("static_polygon", &PyTruth::static_polygon)
       .def_readonly("static_enter", &PyTruth::static_enter)
@@ -112,6 +117,7 @@ void bind_truth(py::module_& m) {
       .def_readonly("static_enter_error", &PyTruth::static_enter_error)
       .def_readonly("static_exit_error", &PyTruth::static_exit_error)
       .def_readonly("static_grazing", &PyTruth::static_grazing)
+      .def_readonly("static_undecided", &PyTruth::static_undecided)
       .def_property_readonly("horizon", [](const PyTruth& t) { return t.file->horizon; })
       .def_property_readonly("scene_sha256", [](const PyTruth& t) { return t.file->scene_sha256; })
       .def("__len__", [](const PyTruth& t) { return t.file->events.size(); })

@@ -30,9 +30,10 @@ void BracketSearch::search(double lo, double hi) {
     return;
   }
   ++evaluations_;
+  const double L = local_ ? std::min(L_, local_(lo, hi)) : L_;
   DistanceOptions o;
   // Resolve the distance to a fraction of what the time tolerance moves the shapes.
-  o.tolerance = std::max(0.25 * L_ * tol_, 1e-15);
+  o.tolerance = std::max(0.25 * L * tol_, 1e-15);
   const BracketProbe p = probe_(mid, o);
   const ConvexDistance& d = p.distance;
   const double inf = std::numeric_limits<double>::infinity();
@@ -42,13 +43,16 @@ void BracketSearch::search(double lo, double hi) {
   double reach = 0.0;
   if (d.status == ConvexDistance::Status::Separated && (slack == 0.0 || d.lower - slack > 0.0)) {
     sure = d.lower - slack > band_ ? Label::Separated : Label::Near;
-    reach = L_ > 0.0 ? (d.lower - slack) / L_ : inf;
+    reach = L > 0.0 ? (d.lower - slack) / L : inf;
   } else if (d.status == ConvexDistance::Status::Overlapping && (slack == 0.0 || d.upper + slack < 0.0)) {
     sure = Label::Overlapping;
-    reach = L_ > 0.0 ? -(d.upper + slack) / L_ : inf;
+    reach = L > 0.0 ? -(d.upper + slack) / L : inf;
+  } else if (d.status == ConvexDistance::Status::Uncertain && d.upper + slack <= 0.0) {
+    sure = Label::Overlapping;  // touching, certified: contact at mid (throughout when L is 0)
+    reach = L > 0.0 ? 0.0 : inf;
   }
   if (sure == Label::Unresolved) {
-    if (hi - lo <= tol_) {
+    if (hi - lo <= tol_ || (local_ && L * (hi - lo) <= 0.5 * (d.upper - d.lower) + slack)) {
       push(lo, hi, Label::Unresolved);
       return;
     }
@@ -107,6 +111,7 @@ void BracketSearch::events(double horizon, std::vector<BracketEvent>& out) {
       ev.enter = ev.exit = r0 + 0.5 * (r1 - r0);
       err.enter_error = err.exit_error = std::max(ev.enter - r0, r1 - ev.enter);
       err.grazing = true;
+      err.undecided = true;
     }
     out.push_back(ev);
     i = k;

@@ -11,13 +11,20 @@
 // narrower than the time tolerance that neither side can claim, which stay unresolved. A
 // separation certified only up to the distance `band` does not count as separated (a
 // sliding touch stays one event). The probe's `slack` (a pose's evaluation error, metres)
-// is taken off both bounds before they certify anything.
+// is taken off both bounds before they certify anything. An upper bound <= 0 that is not
+// below 0 (a touch certified exactly, ccd/queries/sphere_box_distance.hpp) certifies
+// contact at m alone (on all of the sub-interval when L is 0 there).
+// With a local Lipschitz bound (set_local_lipschitz: a bound valid on the sub-interval
+// searched, used when smaller than L), a sub-interval whose distance cannot move by more
+// than the probe's own uncertainty (L_local x width <= half the bracket width plus the
+// slack) is left unresolved at once: splitting it would certify nothing new.
 // Events (a maximal run of pieces not certified separated):
 //  - with a certified overlap inside: enter lies between the run's start and the first
 //    certified overlap, exit between the last certified overlap and the run's end; each
 //    is the middle of its bracket with its half-width as the error (0 at time 0 and at the
 //    horizon when the overlap is certified there);
-//  - with none: `grazing`, enter = exit = the run's middle, errors its half-width.
+//  - with none: `grazing` and `undecided` (the event may or may not exist), enter = exit
+//    = the run's middle, errors its half-width.
 // A certified separation narrower than the time tolerance between two such runs does not
 // split them.
 #include <ccd/queries/convex_distance.hpp>
@@ -26,6 +33,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace ccd {
@@ -48,11 +56,15 @@ class BracketSearch {
  public:
   /// probe(t, options): the distance at t, resolved to options.tolerance.
   using Probe = std::function<BracketProbe(double, const DistanceOptions&)>;
+  /// lipschitz(lo, hi): m/s, a bound on |f'| over [lo, hi].
+  using LocalLipschitz = std::function<double(double, double)>;
 
   /// lipschitz: m/s, the bound on |f'|; time_tolerance: seconds (> 0); band: metres;
   /// max_evaluations: past it the rest of the interval is left unresolved.
   BracketSearch(Probe probe, double lipschitz, double time_tolerance, double band, std::size_t max_evaluations);
 
+  /// Uses min(L, local(lo, hi)) on each sub-interval [lo, hi] searched (see the header).
+  void set_local_lipschitz(LocalLipschitz local) { local_ = std::move(local); }
   /// Labels [lo, hi] (closed; may be called again for a later interval).
   void run(double lo, double hi);
   std::size_t evaluations() const { return evaluations_; }
@@ -70,6 +82,7 @@ class BracketSearch {
   void search(double lo, double hi);
 
   Probe probe_;
+  LocalLipschitz local_;
   double L_, tol_;
   std::size_t max_;
   double band_;

@@ -2,6 +2,7 @@
 
 #include <ccd/queries/convex_distance.hpp>
 #include <ccd/truth/bracket_search.hpp>
+#include <ccd/truth/sphere_refinement.hpp>
 #include <ccd/truth/truth.hpp>
 #include <ccd/truth/truth_table.hpp>
 
@@ -33,16 +34,36 @@ BracketSearch pair_search(const RigidMotion& m, std::uint32_t a, std::uint32_t b
 }
 
 
-// The events of one finished search (ccd/truth/bracket_search.hpp), appended to events
-// and errors as events of the pair (a, b).
-void search_events(BracketSearch& search, std::uint32_t a, std::uint32_t b, double horizon,
-                   std::vector<ContactEvent>& events, std::vector<EventError>& errors) {
+// The events of one finished search (ccd/truth/bracket_search.hpp) over [u0, u1],
+// appended to events and errors as events of the pair (a, b). Where one of the two is a
+// ball, each grazing event's bracket is searched again by refine_sphere_pair
+// (ccd/truth/sphere_refinement.hpp), whose events replace it. Returns the evaluations of
+// those searches.
+std::size_t search_events(const RigidMotion& m, BracketSearch& search, std::uint32_t a, std::uint32_t b, double u0,
+                          double u1, double tol, std::size_t max_evaluations, const Piece* qa, const Piece* qb,
+                          std::vector<ContactEvent>& events, std::vector<EventError>& errors) {
+  const double horizon = m.centres().horizon();
   std::vector<BracketEvent> found;
   search.events(horizon, found);
+  const bool ball_a = m.kind(a) == ShapeKind::Sphere;
+  const bool ball = ball_a || m.kind(b) == ShapeKind::Sphere;
+  std::size_t evaluations = 0;
   for (const BracketEvent& e : found) {
-    events.push_back({a, b, e.enter, e.exit});
-    errors.push_back(e.error);
+    if (!ball || !e.error.grazing) {
+      events.push_back({a, b, e.enter, e.exit});
+      errors.push_back(e.error);
+      continue;
+    }
+    std::vector<BracketEvent> refined;
+    const double lo = std::max(u0, e.enter - e.error.enter_error), hi = std::min(u1, e.exit + e.error.exit_error);
+    evaluations += ball_a ? refine_sphere_pair(m, a, b, lo, hi, tol, max_evaluations, qa, qb, refined)
+                          : refine_sphere_pair(m, b, a, lo, hi, tol, max_evaluations, qb, qa, refined);
+    for (const BracketEvent& r : refined) {
+      events.push_back({a, b, r.enter, r.exit});
+      errors.push_back(r.error);
+    }
   }
+  return evaluations;
 }
 
 // Merges the events of one pair found on adjacent common pieces and image shifts into
@@ -91,6 +112,7 @@ void merge_events(std::vector<ContactEvent>& events, std::vector<EventError>& er
       ev.exit = ev.enter;
       err.exit_error = err.enter_error;
       err.grazing = true;
+      err.undecided = true;
     }
     out_events.push_back(ev);
     out_errors.push_back(err);
@@ -103,12 +125,11 @@ void merge_events(std::vector<ContactEvent>& events, std::vector<EventError>& er
 std::size_t pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
                                 double tol, std::size_t max_evaluations, std::vector<ContactEvent>& events,
                                 std::vector<EventError>& errors) {
-  const double horizon = m.centres().horizon();
   const double lipschitz = m.max_point_speed(a, u0, u1) + m.max_point_speed(b, u0, u1);
   BracketSearch search = pair_search(m, a, b, lipschitz, tol, max_evaluations);
   search.run(u0, u1);
-  search_events(search, a, b, horizon, events, errors);
-  return search.evaluations();
+  return search.evaluations() + search_events(m, search, a, b, u0, u1, tol, max_evaluations, nullptr, nullptr,
+                                              events, errors);
 }
 
 std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, std::uint32_t b, double u0, double u1,
@@ -116,7 +137,6 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, 
                                          std::vector<EventError>& errors) {
   const Trajectories& traj = m.centres();
   const PeriodicBox& box = *traj.periodic();
-  const double horizon = traj.horizon();
   const double reach = m.enclosing_radius(a) + m.enclosing_radius(b);
   const auto pa = traj.pieces(a), pb = traj.pieces(b);
   const auto lb = traj.lows(b);
@@ -160,7 +180,8 @@ std::size_t periodic_pair_bracket_events(const RigidMotion& m, std::uint32_t a, 
                                                max_evaluations - std::min(max_evaluations, evaluations), &qa, &image);
             search.run(c0, c1);
             evaluations += search.evaluations();
-            search_events(search, a, b, horizon, found, found_errors);
+            evaluations += search_events(m, search, a, b, c0, c1, tol, max_evaluations, &qa, &image, found,
+                                         found_errors);
           }
     }
     if (qa.t1 < qb.t1) {

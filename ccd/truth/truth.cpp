@@ -37,6 +37,11 @@ std::size_t sort_with_errors(std::vector<Event>& events, std::vector<EventError>
   return grazing;
 }
 
+std::size_t undecided_count(const std::vector<EventError>& errors) {
+  return static_cast<std::size_t>(
+      std::count_if(errors.begin(), errors.end(), [](const EventError& e) { return e.undecided; }));
+}
+
 std::size_t distinct_pairs(const std::vector<ContactEvent>& events) {
   std::vector<std::uint64_t> pairs;
   pairs.reserve(events.size());
@@ -117,6 +122,8 @@ Truth compute_truth(const RigidMotion& motion, std::span<const StaticPolygon> sc
   out.stats.grazing = sort_with_errors(out.events, out.errors, event_order);
   out.stats.static_grazing = sort_with_errors(out.static_events, out.static_errors, static_event_order);
   out.stats.pairs_in_contact = distinct_pairs(out.events);
+  out.stats.undecided = undecided_count(out.errors);
+  out.stats.static_undecided = undecided_count(out.static_errors);
   return out;
 }
 

@@ -18,6 +18,8 @@ void add_error_fields(json& j, const EventError& err) {
   if (err.enter_error != 0.0) j["enter_error"] = err.enter_error;
   if (err.exit_error != 0.0) j["exit_error"] = err.exit_error;
   if (err.grazing) j["grazing"] = true;
+  // Read as `grazing` when absent: written whenever that would read back wrong.
+  if (err.undecided || err.grazing) j["undecided"] = err.undecided;
 }
 
 json event_json(const TruthFile& t, std::size_t i) {
@@ -41,6 +43,7 @@ EventError read_error_fields(const JsonReader& r, const json& e, const std::stri
   if (err.enter_error < 0.0) r.fail(p + ".enter_error", "must be >= 0");
   if (err.exit_error < 0.0) r.fail(p + ".exit_error", "must be >= 0");
   err.grazing = r.optional_bool(e, "grazing", p, false);
+  err.undecided = r.optional_bool(e, "undecided", p, err.grazing);
   return err;
 }
 

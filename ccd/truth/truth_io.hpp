@@ -9,15 +9,18 @@
 // Per event, version 2 may add `enter_error` and `exit_error` (seconds >= 0: certified
 // bounds on the error of enter and exit; absent = 0, exact) and `grazing` (true: the pair's
 // distance stays within the solver's tolerance band, so the event may or may not exist;
-// absent = false). They live in TruthFile::errors, a side table that stays empty when
-// every event is exact, so ContactEvent keeps its size.
+// absent = false) and `undecided` (true: the truth could certify neither a contact in the
+// event nor a separation through it; absent = the event's `grazing`, so in files written
+// before the field existed every grazing event reads as undecided, which it was). They
+// live in TruthFile::errors, a side table that stays empty when every event is exact, so
+// ContactEvent keeps its size.
 //
 // Scenes with static scenery (docs/scenery.md) add, after `events`,
 //   "static_events": [{"body": i, "polygon": j, "enter": t0, "exit": t1}, ...]
 // (polygon = index in the scene's scenery, mesh triangles after the polygons), sorted by
 // (enter, body, polygon); the field is absent for a scene without scenery, so such
 // truth files are unchanged. A static event of a rigid body (certified, not exact) may
-// carry `enter_error`, `exit_error` and `grazing` as body-body events do
+// carry `enter_error`, `exit_error`, `grazing` and `undecided` as body-body events do
 // (TruthFile::static_errors).
 // Times are written with 17 significant digits, so a file round-trips bit for bit.
 // Validation on reading: malformed JSON, a missing or mistyped field, a non-finite
@@ -42,6 +45,9 @@ struct EventError {
   double enter_error = 0.0;  ///< seconds
   double exit_error = 0.0;   ///< seconds
   bool grazing = false;
+  /// Neither a contact nor a separation could be certified: the event may or may not
+  /// exist. Runners count it apart (never a miss). Every such event is grazing too.
+  bool undecided = false;
   bool operator==(const EventError&) const = default;
 };
 

@@ -49,6 +49,8 @@ struct TruthStats {
   std::size_t evaluations = 0;               ///< distance evaluations of the bracket search
   std::size_t grazing = 0;                   ///< body-body events flagged grazing
   std::size_t static_grazing = 0;            ///< static events flagged grazing
+  std::size_t undecided = 0;                 ///< body-body events flagged undecided
+  std::size_t static_undecided = 0;          ///< static events flagged undecided
   bool cancelled = false;                    ///< stopped by TruthOptions::cancel: the events are partial
 };
 

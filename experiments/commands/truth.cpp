@@ -142,7 +142,10 @@ int run_truth(std::span<const std::string> args) {
               << "bodies       " << scene.bodies.size() << " (horizon " << scene.horizon << " s, motion "
               << ccd::to_string(scene.motion_kind()) << ", " << traj.total_pieces() << " trajectory pieces)\n"
               << "events       " << truth.events.size() << " (" << tangent << " tangent"
-              << (truth.errors.empty() ? std::string() : ", " + std::to_string(st.grazing) + " grazing") << ")\n"
+              << (truth.errors.empty() ? std::string()
+                                       : ", " + std::to_string(st.grazing) + " grazing, " +
+                                             std::to_string(st.undecided) + " undecided")
+              << ")\n"
               << "pairs        " << st.pairs_in_contact << " in contact; " << st.candidate_pair_windows
               << " candidate pair-windows in " << st.windows << " windows, " << st.candidate_runs
               << " solved exactly\n";
@@ -150,7 +153,9 @@ int run_truth(std::span<const std::string> args) {
       std::size_t static_tangent = 0;
       for (const ccd::StaticEvent& e : truth.static_events) static_tangent += e.enter == e.exit;
       std::cout << "static       " << truth.static_events.size() << " events (" << static_tangent << " tangent"
-                << (scene.has_non_spheres() ? ", " + std::to_string(st.static_grazing) + " grazing" : std::string())
+                << (scene.has_non_spheres() ? ", " + std::to_string(st.static_grazing) + " grazing, " +
+                                                  std::to_string(st.static_undecided) + " undecided"
+                                            : std::string())
                 << ") against "
                 << scene.scenery.size() << " polygons\n";
     }

@@ -131,10 +131,10 @@ TEST_CASE("merge validates every field of every shard and names file and field",
     rec["missed"] = 0;
     CHECK(merge_error(s.shards) == "merged");
     rec["missed"] = 1;
-    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: initial_contacts + detected + missed must equal events");
+    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: undecided + initial_contacts + detected + missed must equal events");
     rec["missed"] = 0;
     rec["initial_contacts"] = events + 1;
-    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: initial_contacts + detected + missed must equal events");
+    CHECK(merge_error(s.shards) == s1 + ": records[0].missed: undecided + initial_contacts + detected + missed must equal events");
   }
   SECTION("a record that is not its job's method or dt") {
     first["records"][0]["method"] = "capsule/grid";

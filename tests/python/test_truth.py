@@ -63,6 +63,11 @@ def test_error_fields_when_present(tmp_path):
     assert truth.enter_error.tolist() == [0.0, 0.0625]
     assert truth.exit_error.tolist() == [0.0, 0.125]
     assert truth.grazing.tolist() == [False, True]
+    # Written before `undecided` existed: the grazing event reads as undecided.
+    assert truth.undecided.tolist() == [False, True]
+    document["events"][1]["undecided"] = False
+    (tmp_path / "t.json").write_text(json.dumps(document))
+    assert ccdlab.load_truth(str(tmp_path / "t.json")).undecided.tolist() == [False, False]
 
 
 def test_bad_truth_file_names_the_field(tmp_path):

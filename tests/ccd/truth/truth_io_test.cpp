@@ -195,3 +195,52 @@ TEST_CASE("static events of rigid bodies carry their certified errors", "[truth]
   j["static_events"][1]["grazing"] = 1;
   CHECK(error_of(j).find("static_events[1].grazing") != std::string::npos);
 }
+
+TEST_CASE("truth files carry the undecided flag, and files without it read grazing events as undecided",
+          "[truth][io][undecided]") {
+  TruthFile t = sample();
+  ccd::EventError undecided{0.5, 0.5, true};
+  undecided.undecided = true;
+  ccd::EventError static_undecided{0.25, 0.125, true};
+  static_undecided.undecided = true;
+  t.errors = {{0.0, 0.0, false}, undecided, {0.0, 0.5e-12, false}};
+  t.has_scenery = true;
+  t.static_events = {{2, 0, 0.5, 0.75}, {0, 1, 1.0, 1.0}};
+  t.static_errors = {{1e-9, 1e-9, false}, static_undecided};
+  const json j = json::parse(ccd::truth_to_text(t));
+  CHECK(j["events"][1]["undecided"] == true);
+  CHECK_FALSE(j["events"][0].contains("undecided"));
+  CHECK_FALSE(j["events"][2].contains("undecided"));
+  CHECK(j["static_events"][1]["undecided"] == true);
+  CHECK_FALSE(j["static_events"][0].contains("undecided"));
+  const TruthFile back = ccd::truth_from_json(j, "t.json");
+  CHECK(back.errors == t.errors);
+  CHECK(back.static_errors == t.static_errors);
+  CHECK(back.errors[1].undecided);
+  CHECK_FALSE(back.errors[0].undecided);
+
+  SECTION("grazing but decided is written as such and reads back") {
+    t.errors[1].undecided = false;
+    const json k = json::parse(ccd::truth_to_text(t));
+    CHECK(k["events"][1]["undecided"] == false);
+    CHECK(ccd::truth_from_json(k, "t.json").errors == t.errors);
+  }
+  SECTION("a file written before the field: its grazing events are undecided, the others not") {
+    json old = j;
+    old["events"][1].erase("undecided");
+    old["static_events"][1].erase("undecided");
+    const TruthFile o = ccd::truth_from_json(old, "t.json");
+    CHECK(o.errors[1].undecided);
+    CHECK_FALSE(o.errors[0].undecided);
+    CHECK(o.static_errors[1].undecided);
+    CHECK_FALSE(o.static_errors[0].undecided);
+  }
+  SECTION("a non-boolean undecided names the file and the field") {
+    json bad = j;
+    bad["events"][1]["undecided"] = "yes";
+    CHECK(error_of(bad) == "t.json: events[1].undecided: must be true or false");
+    json bad_static = j;
+    bad_static["static_events"][0]["undecided"] = 0;
+    CHECK(error_of(bad_static) == "t.json: static_events[0].undecided: must be true or false");
+  }
+}
