@@ -160,4 +160,10 @@ double certified_pair_work(const ccd::RigidMotion& motion, std::size_t windows) 
   return kTruthEvaluationsNear * w.near + kTruthEvaluationsDeep * w.deep;
 }
 
+double run_pair_work(const ccd::RigidMotion& motion, double steps, bool truth_given) {
+  const PairWork w = pair_window_work(motion);
+  const double narrow = (w.near + w.deep) * steps / static_cast<double>(kEstimateWindows);
+  return narrow + (truth_given ? 0.0 : kTruthEvaluationsNear * w.near + kTruthEvaluationsDeep * w.deep);
+}
+
 }  // namespace ccdlab

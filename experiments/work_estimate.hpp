@@ -79,6 +79,12 @@ inline constexpr double kTruthEvaluationsDeep = 1e4;
 /// The certified ground truth's work for a scene with shapes, in certified pair tests:
 /// kTruthEvaluationsNear x near + kTruthEvaluationsDeep x deep (pair_window_work).
 double certified_pair_work(const ccd::RigidMotion& motion, std::size_t windows = kEstimateWindows);
+/// `ccdlab run`'s work on a scene with shapes, in certified pair tests: the truth's
+/// (certified_pair_work, unless `truth_given`) and the narrow phase's, one test per
+/// candidate pair at each of `steps` steps (summed over the jobs), a window's pairs at each
+/// of its steps.
+double run_pair_work(const ccd::RigidMotion& motion, double steps, bool truth_given);
+
 /// The certified pair tests the truth and the rigid narrow phase accept without --force.
 inline constexpr double kMaxPairWorkWithoutForce = 1e9;
 /// What a certified pair test estimate is made of, for the refusal's message.

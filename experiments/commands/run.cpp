@@ -213,11 +213,7 @@ int run_run(std::span<const std::string> args) {
     if (scene.has_non_spheres()) try {
       const ccd::Trajectories traj(scene);
       const double steps = experiment_work(e, 1, scene.horizon, options.shard.index, options.shard.count);
-      // The truth: its bracket evaluations per candidate pair-window; the narrow phase:
-      // one test per candidate pair and step, a window's pairs at each of its steps.
-      const PairWork w = pair_window_work(ccd::RigidMotion(scene, traj));
-      pair_work = (w.near + w.deep) * steps / static_cast<double>(kEstimateWindows);
-      if (truth_path.empty()) pair_work += kTruthEvaluationsNear * w.near + kTruthEvaluationsDeep * w.deep;
+      pair_work = run_pair_work(ccd::RigidMotion(scene, traj), steps, !truth_path.empty());
       check_work({pair_work, kMaxPairWorkWithoutForce, "certified pair tests",
                   std::to_string(scene.bodies.size()) + " bodies with shapes, " + number(steps) + " steps in all; " +
                       kPairWorkDetail},
