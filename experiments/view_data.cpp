@@ -210,7 +210,7 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
   return data;
 }
 
-json cloth_view_data(const json& j, const std::string& file) {
+json cloth_view_data(const json& j, const std::string& file, bool force) {
   const ccd::JsonReader r{file};
   if (!j.is_object()) r.fail("", "must be a JSON object");
   const std::string format = r.string(r.require(j, "format", ""), "format");
@@ -252,6 +252,10 @@ json cloth_view_data(const json& j, const std::string& file) {
   if (auto fl = j.find("floor"); fl != j.end() && !fl->is_null()) data["floor"] = r.number(*fl, "floor");
   const json& fr = r.require(j, "frames", "");
   if (!fr.is_array() || fr.empty()) r.fail("frames", "must be a non-empty array");
+  check_work({static_cast<double>(fr.size()) * static_cast<double>(particles), kMaxViewEntries, "page entries",
+              std::to_string(fr.size()) + " frames of " + std::to_string(nx) + " x " + std::to_string(ny) +
+                  " particles"},
+             force, file, "frames");
   json frames = json::array();
   double last = -1.0;
   for (std::size_t i = 0; i < fr.size(); ++i) {

@@ -41,7 +41,8 @@ nlohmann::json body_view_data(const ccd::Scene& scene, const ViewInputs& inputs)
 
 /// The page's data for the frames a cloth run wrote (`ccdlab-cloth-frames/1`, from
 /// `ccdlab cloth ... -o FRAMES.json`): the mesh at each frame, drawn linearly in between.
-/// Throws ccd::InputError naming `file` and the field.
-nlohmann::json cloth_view_data(const nlohmann::json& frames, const std::string& file);
+/// Throws ccd::InputError naming `file` and the field, also when the page would hold more
+/// than kMaxViewEntries particle positions (frames x particles) and `force` is false.
+nlohmann::json cloth_view_data(const nlohmann::json& frames, const std::string& file, bool force = false);
 
 }  // namespace ccdlab

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <sys/stat.h>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 namespace ccdlab {
@@ -41,73 +42,128 @@ double check_input_file(const std::string& path, double max_bytes, bool force) {
 
 namespace {
 
-// Per body in one window: its swept box along one axis and the two factors of its cost.
-struct Interval {
-  double lo, hi;
+// Per body in one window: its swept box, its centre's, and the two factors of its cost.
+struct Swept {
+  ccd::Aabb box;     // the enclosing sphere's
+  ccd::Aabb centre;  // the centre's
+  double inner;   // the largest sphere about the centre inside the shape, at most
   double turn;    // largest point speed x window length / enclosing radius
   double points;  // size of the convex proxy
 };
 
-// Sum over the pairs (i < j) whose intervals overlap of (1 + t_i + t_j)(n_i + n_j)^2, and
-// their count, in O(n log n): sorted by lo, the partners of i that come after it are a
-// contiguous range (lo_j <= hi_i); the cost expands into products of one body's and the
-// other's terms, summed over the range with prefix sums.
-std::array<double, 2> overlapping_pairs(std::vector<Interval>& v) {
-  std::sort(v.begin(), v.end(), [](const Interval& a, const Interval& b) { return a.lo < b.lo; });
-  const std::size_t n = v.size();
-  // Prefix sums of 1, n, n^2, t, t n, t n^2 over the sorted order.
-  std::vector<std::array<double, 6>> prefix(n + 1, std::array<double, 6>{});
-  for (std::size_t k = 0; k < n; ++k) {
-    const double p = v[k].points, t = v[k].turn;
-    const std::array<double, 6> term = {1.0, p, p * p, t, t * p, t * p * p};
-    for (int c = 0; c < 6; ++c) prefix[k + 1][c] = prefix[k][c] + term[c];
+// Past this many pairs overlapping on the window's best axis, the pairs are not
+// enumerated: every one of them is counted as overlapping deeply (an upper bound).
+constexpr double kMaxEnumeratedPairs = 4e6;
+
+// The pairs whose boxes overlap along `axis`, counted in O(n log n) on a sorted copy.
+double overlapping_on_axis(const std::vector<Swept>& v, int axis) {
+  std::vector<std::pair<double, double>> iv(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i) iv[i] = {v[i].box.lo[axis], v[i].box.hi[axis]};
+  std::sort(iv.begin(), iv.end());
+  double pairs = 0.0;
+  for (std::size_t i = 0; i < iv.size(); ++i) {
+    const auto end = std::upper_bound(iv.begin() + static_cast<std::ptrdiff_t>(i) + 1, iv.end(),
+                                      std::pair{iv[i].second, std::numeric_limits<double>::infinity()});
+    pairs += static_cast<double>(end - iv.begin()) - static_cast<double>(i) - 1.0;
   }
-  double pairs = 0.0, cost = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto end = std::upper_bound(v.begin() + static_cast<std::ptrdiff_t>(i) + 1, v.end(), v[i].hi,
-                                      [](double x, const Interval& b) { return x < b.lo; });
-    const auto j1 = static_cast<std::size_t>(end - v.begin());
-    if (j1 <= i + 1) continue;
-    std::array<double, 6> s{};
-    for (int c = 0; c < 6; ++c) s[c] = prefix[j1][c] - prefix[i + 1][c];
-    const double a = 1.0 + v[i].turn, p = v[i].points;
-    // (a + t_j)(p^2 + 2 p n_j + n_j^2)
-    cost += a * (p * p * s[0] + 2.0 * p * s[1] + s[2]) + (p * p * s[3] + 2.0 * p * s[4] + s[5]);
-    pairs += s[0];
+  return pairs;
+}
+
+// The largest distance between the two centres over the window (far corners of their boxes).
+double farthest_centres(const Swept& a, const Swept& b) {
+  ccd::Vec3 d;
+  for (int k = 0; k < 3; ++k)
+    d[k] = std::max(std::fabs(a.centre.hi[k] - b.centre.lo[k]), std::fabs(b.centre.hi[k] - a.centre.lo[k]));
+  return d.norm();
+}
+
+// An upper bound on the radius of the largest sphere about the body's centre inside its
+// shape: the nearest of the six axis-aligned support planes of its convex proxy (exact
+// for a sphere, a capsule and a box).
+double inner_radius(const ccd::ConvexProxy& proxy) {
+  double inner = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k)
+    for (const double sign : {-1.0, 1.0}) {
+      double reach = -std::numeric_limits<double>::infinity();
+      for (const ccd::Vec3& p : proxy.points) reach = std::max(reach, sign * p[k]);
+      inner = std::min(inner, reach);
+    }
+  return std::max(0.0, inner) + proxy.radius;
+}
+
+// One window's pairs whose swept boxes overlap, each (1 + t_a + t_b)(n_a + n_b), split
+// into those whose shapes overlap deeply for the whole window (their centres stay within
+// the sum of their inner radii) and the others.
+PairWork window_work(std::vector<Swept>& v) {
+  PairWork w;
+  std::array<double, 3> count{};
+  for (int axis = 0; axis < 3; ++axis) count[static_cast<std::size_t>(axis)] = overlapping_on_axis(v, axis);
+  const int best = static_cast<int>(std::min_element(count.begin(), count.end()) - count.begin());
+  if (count[static_cast<std::size_t>(best)] > kMaxEnumeratedPairs) {
+    // Too many to list: each as deep, at the largest cost of a pair.
+    double turn = 0.0, points = 0.0;
+    for (const Swept& s : v) turn = std::max(turn, s.turn), points = std::max(points, s.points);
+    w.deep = count[static_cast<std::size_t>(best)] * (1.0 + 2.0 * turn) * 2.0 * points;
+    return w;
   }
-  return {pairs, cost};
+  std::sort(v.begin(), v.end(), [best](const Swept& a, const Swept& b) { return a.box.lo[best] < b.box.lo[best]; });
+  for (std::size_t i = 0; i < v.size(); ++i)
+    for (std::size_t j = i + 1; j < v.size() && v[j].box.lo[best] <= v[i].box.hi[best]; ++j) {
+      const Swept& a = v[i];
+      const Swept& b = v[j];
+      if (!a.box.overlaps(b.box)) continue;
+      const double cost = (1.0 + a.turn + b.turn) * (a.points + b.points);
+      (farthest_centres(a, b) <= a.inner + b.inner ? w.deep : w.near) += cost;
+    }
+  return w;
 }
 
 }  // namespace
 
-double certified_pair_work(const ccd::RigidMotion& motion, std::size_t windows) {
+PairWork pair_window_work(const ccd::RigidMotion& motion, std::size_t windows) {
   const ccd::Trajectories& traj = motion.centres();
   const std::size_t n = motion.size();
   const double horizon = traj.horizon();
-  double total = 0.0;
-  std::vector<ccd::Aabb> boxes(n);
-  std::vector<Interval> intervals(n);
-  std::vector<double> turn(n), points(n);
-  for (std::size_t i = 0; i < n; ++i) points[i] = static_cast<double>(motion.proxy(i).points.size());
+  PairWork total;
+  std::vector<Swept> swept(n);
+  std::vector<double> points(n), inner(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const ccd::ConvexProxy proxy = motion.proxy(i);
+    points[i] = static_cast<double>(proxy.points.size());
+    inner[i] = inner_radius(proxy);
+  }
   for (std::size_t w = 0; w < windows; ++w) {
     const double u0 = horizon * static_cast<double>(w) / static_cast<double>(windows);
     const double u1 = w + 1 == windows ? horizon : horizon * static_cast<double>(w + 1) / static_cast<double>(windows);
     for (std::size_t i = 0; i < n; ++i) {
-      boxes[i] = traj.swept_bounds(i, u0, u1);
-      const double radius = std::max(motion.enclosing_radius(i), 1e-300);
-      turn[i] = motion.max_point_speed(i, u0, u1) * (u1 - u0) / radius;
+      Swept& s = swept[i];
+      s.box = traj.swept_bounds(i, u0, u1);
+      const double radius = motion.enclosing_radius(i);
+      s.centre = s.box;
+      for (int k = 0; k < 3; ++k) {
+        s.centre.lo[k] += radius;
+        s.centre.hi[k] = std::max(s.centre.lo[k], s.centre.hi[k] - radius);
+      }
+      s.inner = inner[i];
+      s.turn = motion.max_point_speed(i, u0, u1) * (u1 - u0) / std::max(radius, 1e-300);
+      s.points = points[i];
     }
-    std::array<double, 3> cost{}, count{};
-    for (int axis = 0; axis < 3; ++axis) {
-      for (std::size_t i = 0; i < n; ++i) intervals[i] = {boxes[i].lo[axis], boxes[i].hi[axis], turn[i], points[i]};
-      const auto [pairs, c] = overlapping_pairs(intervals);
-      count[static_cast<std::size_t>(axis)] = pairs;
-      cost[static_cast<std::size_t>(axis)] = c;
-    }
-    const auto best = std::min_element(count.begin(), count.end()) - count.begin();
-    total += cost[static_cast<std::size_t>(best)];
+    const PairWork ww = window_work(swept);
+    total.near += ww.near;
+    total.deep += ww.deep;
   }
   return total;
+}
+
+double certified_pair_work(const ccd::RigidMotion& motion, std::size_t windows) {
+  const PairWork w = pair_window_work(motion, windows);
+  return kTruthEvaluationsNear * w.near + kTruthEvaluationsDeep * w.deep;
+}
+
+double run_pair_work(const ccd::RigidMotion& motion, double steps, bool truth_given) {
+  const PairWork w = pair_window_work(motion);
+  const double narrow = (w.near + w.deep) * steps / static_cast<double>(kEstimateWindows);
+  return narrow + (truth_given ? 0.0 : kTruthEvaluationsNear * w.near + kTruthEvaluationsDeep * w.deep);
 }
 
 }  // namespace ccdlab

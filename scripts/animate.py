@@ -2,7 +2,7 @@
 """Pictures of what a method missed: `ccdlab animate`.
 
 usage: /usr/bin/python3 scripts/animate.py SCENE.json --results RESULTS.json --method METHOD
-           --dt DT [--from T0] [--to T1] [--fps N] [--frames-per-step K] -o OUT.gif|OUT.mp4
+           --dt DT [--from T0] [--to T1] [--fps N] [--frames-per-step K] [--force] -o OUT.gif|OUT.mp4
 
 Draws the scene between T0 and T1, projected on the two widest axes of its box:
   left    every body at the frame's time (grey); the bodies of each contact the method
@@ -20,6 +20,12 @@ is used and its missed count must equal the recomputed one.
 
 Writes a GIF (Pillow, with Debian's python3-matplotlib) or an MP4 (needs ffmpeg). Bad input
 exits with status 2 and one line naming the file and the field. Needs the ccdlab module.
+
+The work is estimated before any of it, as every ccdlab command does (check_work below,
+docs/formats.md "Work estimates and `--force`"): the frames (at most 2000), the bodies drawn
+over them (frames x bodies, at most 2e6 body-frames) and the run that finds the missed
+contacts (bodies x horizon / dt, at most 1e11 body-steps); past a limit it exits with status 2
+and one line stating the estimate, unless --force.
 """
 import argparse
 import json
@@ -39,6 +45,25 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import animation  # noqa: E402
 from matplotlib.collections import EllipseCollection  # noqa: E402
 from matplotlib.patches import Circle  # noqa: E402
+
+
+MAX_FRAMES = 2000
+MAX_BODY_FRAMES = 2e6     # bodies drawn, summed over the frames: about 20 us each
+MAX_BODY_STEPS = 1e11     # the run's body-steps, as `ccdlab run` (kMaxWorkWithoutForce)
+
+
+def work_number(x):
+    """Three significant digits, as the C++ work_number ("1.2e+13", "430")."""
+    return f"{x:.3g}"
+
+
+def check_work(amount, limit, unit, detail, force, file, field):
+    """Refuses work above `limit` (or not a number) unless `force`, in the words of the C++
+    check_work(): FILE: FIELD: needs AMOUNT UNIT (DETAIL), above the limit LIMIT without --force."""
+    if force or amount <= limit:
+        return
+    raise BadInput(f"{file}: {field}: needs {work_number(amount)} {unit} ({detail}), "
+                   f"above the limit {work_number(limit)} without --force")
 
 
 def load_results(path):
@@ -81,6 +106,7 @@ def main(argv):
     ap.add_argument("--fps", type=int, default=12)
     ap.add_argument("--frames-per-step", type=int, default=6)
     ap.add_argument("-o", "--output", required=True)
+    ap.add_argument("--force", action="store_true", help="animate past the work estimate's limits")
     args = ap.parse_args(argv)
     try:
         return animate(args)
@@ -123,9 +149,19 @@ def animate(args):
     t1 = scene.horizon if args.t1 is None else args.t1
     if not (0.0 <= t0 < t1 <= scene.horizon):
         raise BadInput(f"--from, --to: must satisfy 0 <= from < to <= horizon = {scene.horizon}")
-    frames = int(math.ceil((t1 - t0) / dt * args.frames_per_step)) + 1
-    if frames > 2000:
-        raise BadInput(f"--from, --to: {frames} frames; at most 2000 (a shorter window or fewer --frames-per-step)")
+    per_window = (t1 - t0) / dt * args.frames_per_step
+    if not math.isfinite(per_window) or not math.isfinite(scene.horizon / dt):
+        raise BadInput(f"--dt: {dt:g} is too small for the horizon {scene.horizon:g} s")
+    frames = int(math.ceil(per_window)) + 1
+    bodies = len(scene)
+    check_work(frames, MAX_FRAMES, "frames",
+               f"{t1 - t0:g} s at dt = {dt:g}, {args.frames_per_step} frames per step", args.force,
+               args.scene, "--from, --to")
+    check_work(frames * bodies, MAX_BODY_FRAMES, "body-frames", f"{bodies} bodies x {frames} frames",
+               args.force, args.scene, "bodies")
+    steps = math.ceil(scene.horizon / dt)
+    check_work(bodies * steps, MAX_BODY_STEPS, "body-steps",
+               f"{bodies} bodies, {steps} steps at dt = {dt:g}", args.force, args.scene, "--dt")
 
     truth = ccdlab.truth(scene)
     if truth.scene_sha256 != res["truth"]["scene_sha256"]:
@@ -139,7 +175,8 @@ def animate(args):
     with tempfile.TemporaryDirectory() as tmp:
         truth.save(os.path.join(tmp, "truth.json"))
         try:
-            run = ccdlab.run(experiment, truth=os.path.join(tmp, "truth.json"), missed_events=True)
+            run = ccdlab.run(experiment, truth=os.path.join(tmp, "truth.json"), missed_events=True,
+                             force=args.force)
         except ValueError as e:
             raise BadInput(str(e))
     run_record = run["records"][0]

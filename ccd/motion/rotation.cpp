@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
+#include <utility>
 
 namespace ccd {
 
@@ -18,11 +21,26 @@ Quat RotationPiece::orientation(double t) const {
 Rotations::Rotations(const Scene& scene) {
   if (!scene.has_non_spheres()) return;
   first_.reserve(scene.bodies.size() + 1);
+  // Free bodies of one shape and one mass or density share their principal inertia: a
+  // hull's is computed once (points x faces time), not once per body.
+  std::map<std::tuple<int, double, double>, std::pair<Vec3, Eigen::Matrix3d>> shared;
   for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
     const RigidBody b = scene.rigid_body(i);
     Vec3 moments = Vec3::Ones();
     Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
-    if (b.spin == SpinModel::Free) scene.principal_inertia(i, moments, axes);
+    if (b.spin == SpinModel::Free) {
+      if (b.shape != kNoShape && !b.inertia) {
+        const auto key = std::tuple(static_cast<int>(b.shape), b.mass.value_or(-1.0), b.density.value_or(-1.0));
+        auto it = shared.find(key);
+        if (it == shared.end()) {
+          scene.principal_inertia(i, moments, axes);
+          it = shared.emplace(key, std::pair(moments, axes)).first;
+        }
+        std::tie(moments, axes) = it->second;
+      } else {
+        scene.principal_inertia(i, moments, axes);
+      }
+    }
     auto start = [&](double t0, const Quat& q0, const Vec3& omega) {
       RotationPiece p;
       p.t0 = t0;

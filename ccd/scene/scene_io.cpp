@@ -5,6 +5,7 @@
 #include <ccd/io/json_reader.hpp>
 #include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_binary.hpp>
+#include <ccd/shape/convex_hull.hpp>
 #include <ccd/shape/mass_properties.hpp>
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 #include <limits>
 #include <string>
 #include <unordered_map>
+#include <vector>
 #include <cstdio>
 
 namespace ccd {
@@ -384,6 +386,7 @@ void validate_scene(const Scene& s, const std::string& file) {
   if (!s.rigid.empty() && s.rigid.size() != s.bodies.size())
     r.fail("bodies", "the shape and spin table has " + std::to_string(s.rigid.size()) + " entries for " +
                          std::to_string(s.bodies.size()) + " bodies");
+  std::vector<char> centre_checked(s.shapes.size(), 0);  // a hull's centre of mass: once per shape
   for (std::size_t i = 0; i < s.bodies.size(); ++i) {
     const Body& b = s.bodies[i];
     // Field names are built only for a message (a million bodies would otherwise build tens
@@ -424,7 +427,13 @@ void validate_scene(const Scene& s, const std::string& file) {
     if (rb.spin == SpinModel::Free && rb.shape != kNoShape && !rb.inertia) {
       // A free body turns about its centre of mass, which the shape's origin must be.
       const Shape& sh = s.shapes[static_cast<std::size_t>(rb.shape)];
-      if (sh.kind == ShapeKind::Hull) {
+      if (sh.kind == ShapeKind::Hull && !centre_checked[static_cast<std::size_t>(rb.shape)]) {
+        centre_checked[static_cast<std::size_t>(rb.shape)] = 1;
+        // Counted before the mass properties are computed (points x faces time).
+        if (sh.points.size() > kMaxMassPropertyPoints)
+          r.fail(p() + ".spin", "free spin computes the mass properties of \"" + sh.name + "\" from its points, at most " +
+                                  std::to_string(kMaxMassPropertyPoints) + " (it has " +
+                                  std::to_string(sh.points.size()) + "); give inertia, or fewer points");
         const Vec3 c = mass_properties(sh, 1.0).centre;
         if (!(c.norm() <= 1e-9 * sh.enclosing_radius())) {
           char text[96];

@@ -11,8 +11,8 @@
 //    Mirtich 1996), as a sum of tetrahedra from an inner point to the triangulated faces:
 //    a tetrahedron with corners v0..v3 and volume V has
 //    integral of x x^T = V / 20 (sum v_i v_i^T + (sum v_i)(sum v_i)^T).
-// Units: metres, kg/m^3, kg, kg m^2. The hull's faces are found by brute force over point
-// triples (a few hundred points at most are practical).
+// Units: metres, kg/m^3, kg, kg m^2. The hull's faces are its convex hull's
+// (ccd/shape/convex_hull.hpp, points x faces time: a scene bounds the point count).
 #include <ccd/geometry/vec3.hpp>
 #include <ccd/shape/shape.hpp>
 

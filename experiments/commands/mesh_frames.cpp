@@ -1,10 +1,12 @@
-// `ccdlab mesh-frames NAME -o DIR [--faces N] [--seed S] [--n N] [--step K] [--ascii]`: a
+// `ccdlab mesh-frames NAME -o DIR [--faces N] [--seed S] [--n N] [--step K] [--ascii] [--force]`: a
 // pair of mesh frames as PLY files DIR/frame0.ply and DIR/frame1.ply, for `ccdlab ccd
 // FRAME0 FRAME1` (docs/mesh-ccd.md). NAME is a generator of cloth/mesh_ccd/mesh_frames.hpp
 // (sheet_on_sphere, tori, crumpled; about N faces) or a cloth scene (drape, twist, pile or
 // a ccdlab-cloth/1 file, N particles per side): its states K and K + 1.
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
+
+#include "../work_estimate.hpp"
 
 #include <cloth/io/ply_writer.hpp>
 #include <cloth/mesh_ccd/mesh_frames.hpp>
@@ -26,10 +28,18 @@ bool is_generator(const std::string& name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// States K and K + 1 of a cloth run.
-ccd::cloth::MeshFramePair cloth_frames(const std::string& scene_arg, int n, int step) {
+// The faces a generator writes without --force (two frames of them, as PLY).
+constexpr double kMaxGeneratedFaces = 1e7;
+
+// States K and K + 1 of a cloth run; refused past 1e9 particle-steps (as `ccdlab cloth`)
+// before the simulation unless `force`.
+ccd::cloth::MeshFramePair cloth_frames(const std::string& scene_arg, int n, int step, bool force) {
   ccd::cloth::ClothScene scene = load_cloth_scene(scene_arg, n);
   scene.steps = step + 1;
+  check_work({static_cast<double>(scene.particle_count()) * scene.steps, 1e9, "particle-steps",
+              std::to_string(scene.nx) + " x " + std::to_string(scene.ny) + " particles, " +
+                  std::to_string(scene.steps) + " steps"},
+             force, scene_arg, "--step");
   ccd::cloth::ClothSimulator sim(scene);
   for (int k = 0; k < step; ++k) sim.step();
   ccd::cloth::MeshFramePair m;
@@ -48,6 +58,7 @@ int run_mesh_frames(std::span<const std::string> args) {
   std::string name, out_path;
   std::uint64_t faces = 1000, seed = 1;
   int n = 32, step = 0;
+  bool force = false;
   ccd::cloth::PlyEncoding encoding;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -71,6 +82,8 @@ int run_mesh_frames(std::span<const std::string> args) {
       const auto v = has_value ? ccd::parse_integer(args[++i], 0, 1000000) : std::nullopt;
       if (!v) return usage_error("--step needs an integer in [0, 1000000]");
       step = static_cast<int>(*v);
+    } else if (a == "--force") {
+      force = true;
     } else if (a == "--ascii") {
       encoding.format = ccd::cloth::PlyFormat::Ascii;
     } else if (a.size() > 1 && a[0] == '-') {
@@ -85,8 +98,11 @@ int run_mesh_frames(std::span<const std::string> args) {
     return usage_error("need a generator (sheet_on_sphere, tori, crumpled) or a cloth scene, and -o DIR");
   try {
     ccd::OutputDirectory output(out_path, "frame0.ply");
+    if (is_generator(name))
+      check_work({static_cast<double>(faces), kMaxGeneratedFaces, "faces", "--faces " + std::to_string(faces)}, force,
+                 name, "--faces");
     const ccd::cloth::MeshFramePair m =
-        is_generator(name) ? ccd::cloth::generate_mesh_frames(name, faces, seed) : cloth_frames(name, n, step);
+        is_generator(name) ? ccd::cloth::generate_mesh_frames(name, faces, seed) : cloth_frames(name, n, step, force);
     output.write("frame0.ply", ccd::cloth::format_ply({m.x0, m.faces}, encoding));
     output.write("frame1.ply", ccd::cloth::format_ply({m.x1, m.faces}, encoding));
     output.commit();
@@ -102,8 +118,8 @@ int run_mesh_frames(std::span<const std::string> args) {
 
 extern const Command kMeshFramesCommand = {
     "mesh-frames", "write a pair of mesh frames (PLY) for ccdlab ccd FRAME0 FRAME1",
-    "usage: ccdlab mesh-frames sheet_on_sphere|tori|crumpled -o DIR [--faces N] [--seed S] [--ascii]\n"
-    "       ccdlab mesh-frames drape|twist|pile|SCENE.json -o DIR [--n N] [--step K] [--ascii]\n"
+    "usage: ccdlab mesh-frames sheet_on_sphere|tori|crumpled -o DIR [--faces N] [--seed S] [--ascii] [--force]\n"
+    "       ccdlab mesh-frames drape|twist|pile|SCENE.json -o DIR [--n N] [--step K] [--ascii] [--force]\n"
     "\n"
     "Writes DIR/frame0.ply and DIR/frame1.ply (binary little-endian, double coordinates; --ascii\n"
     "for text), one triangle mesh at t = 0 and t = 1, for `ccdlab ccd DIR/frame0.ply DIR/frame1.ply`\n"
@@ -115,6 +131,8 @@ extern const Command kMeshFramesCommand = {
     "--faces N        about N faces (default 1000; 8 to 2^26)\n"
     "drape, twist, pile, SCENE.json: a cloth run (docs/cloth.md) with N particles per side\n"
     "(--n, default 32); the frames are its states K and K + 1 (--step K, default 0).\n"
+    "--force          write more than 1e7 faces, or simulate more than 1e9 particle-steps\n"
+    "                 (particles x (K + 1)); without it such work is refused up front\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_mesh_frames};

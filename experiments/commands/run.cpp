@@ -2,6 +2,7 @@
 //  [--force] [--list-missed]`
 #include "command.hpp"
 
+#include "cloth_experiment_work.hpp"
 #include "../run_cloth_experiment.hpp"
 #include "../run_experiment.hpp"
 #include "../summary.hpp"
@@ -74,9 +75,10 @@ void commit_with_summary(ccd::OutputFile& output, std::optional<ccd::OutputFile>
 // A cloth experiment (ccdlab-cloth-experiment/1): simulate, exact mesh truth (cached in
 // TRUTH_CACHE, by default the folder cloth-truth beside the results), every job.
 int run_cloth(const std::string& experiment_path, std::string out_path, int threads, bool quiet,
-              std::string truth_cache) {
+              std::string truth_cache, bool force) {
   ClothExperiment e = load_cloth_experiment(experiment_path);
   const ccd::cloth::ClothScene scene = load_cloth_experiment_scene(e, experiment_path);
+  check_cloth_experiment_work(e, scene, experiment_path, force);
   if (out_path.empty()) out_path = "results/" + e.name + ".json";
   if (truth_cache.empty() && out_path != "-")
     truth_cache = (std::filesystem::path(out_path).parent_path() / "cloth-truth").string();
@@ -160,9 +162,9 @@ int run_run(std::span<const std::string> args) {
     std::error_code ec;
     if (std::filesystem::is_regular_file(experiment_path, ec) &&
         is_cloth_experiment(ccd::read_json_file(experiment_path))) {
-      if (options.shard.count > 1 || !truth_path.empty() || list_missed || force)
-        return usage_error("--shard, --truth, --list-missed and --force apply to sphere and rigid experiments only");
-      return run_cloth(experiment_path, out_path, options.threads, options.quiet, truth_cache);
+      if (options.shard.count > 1 || !truth_path.empty() || list_missed)
+        return usage_error("--shard, --truth and --list-missed apply to sphere and rigid experiments only");
+      return run_cloth(experiment_path, out_path, options.threads, options.quiet, truth_cache, force);
     }
     if (!truth_cache.empty()) return usage_error("--truth-cache applies to cloth experiments only");
   } catch (...) {
@@ -207,14 +209,14 @@ int run_run(std::span<const std::string> args) {
                                 " without --force");
     // Shaped bodies: the certified truth (unless read from --truth) and the rigid narrow
     // phase, which tests at most a window's candidate pairs per step.
+    double pair_work = 0.0;
     if (scene.has_non_spheres()) try {
       const ccd::Trajectories traj(scene);
       const double steps = experiment_work(e, 1, scene.horizon, options.shard.index, options.shard.count);
-      const double pair_work = certified_pair_work(ccd::RigidMotion(scene, traj)) *
-                               ((truth_path.empty() ? 1.0 : 0.0) + steps / static_cast<double>(kEstimateWindows));
+      pair_work = run_pair_work(ccd::RigidMotion(scene, traj), steps, !truth_path.empty());
       check_work({pair_work, kMaxPairWorkWithoutForce, "certified pair tests",
-                  std::to_string(scene.bodies.size()) + " bodies with shapes, " + number(steps) +
-                      " steps in all; candidate pairs x hull sizes x turns"},
+                  std::to_string(scene.bodies.size()) + " bodies with shapes, " + number(steps) + " steps in all; " +
+                      kPairWorkDetail},
                  force, experiment_path, "scene");
     } catch (const ccd::TooManyPieces&) {
       // reported below by the run itself, naming the body
@@ -234,7 +236,8 @@ int run_run(std::span<const std::string> args) {
     if (out_path != "-") summary.emplace(summary_path(out_path), inputs);
     if (!options.quiet)
       std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
-                << number(most_steps) << " steps per job)\n";
+                << number(most_steps) << " steps per job)"
+                << (pair_work > 0.0 ? ", " + number(pair_work) + " certified pair tests" : std::string()) << "\n";
 
     options.cancel = &g_cancel;
     install_cancel_handlers();
@@ -305,8 +308,10 @@ extern const Command kRunCommand = {
     "  -q, --quiet        no progress on stderr\n"
     "  --force            run even when the work estimate (bodies x steps, summed over the\n"
     "                     jobs) is above 1e11 body-steps or, with shaped bodies, the certified\n"
-    "                     pair tests (candidate pairs x hull sizes x turns, of the truth and\n"
-    "                     of the narrow phase) are above 1e9 (docs/formats.md)\n"
+    "                     pair tests (candidate pairs x evaluations x hull points, of the truth and\n"
+    "                     of the narrow phase) are above 1e9; a cloth experiment: above 1e9\n"
+    "                     particle-steps of simulation, 4e9 bytes of states kept or 1e10\n"
+    "                     particle-steps of checks over its jobs (docs/formats.md)\n"
     "  --list-missed      every record lists the contact events it missed (missed_events:\n"
     "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
     "  --truth-cache DIR  cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"

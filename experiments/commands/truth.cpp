@@ -41,8 +41,9 @@ constexpr const char* kUsage =
     "                automatic)\n"
     "  --quiet       print no summary and no progress\n"
     "  --force       compute a scene with shapes whose estimated work (certified pair tests:\n"
-    "                candidate pairs x hull sizes x turns, docs/formats.md) is above 1e9; without\n"
-    "                it such a scene is refused before the work with the estimate\n"
+    "                candidate pairs x bracket evaluations x hull points, docs/formats.md) is\n"
+    "                above 1e9; without it such a scene is refused before the work with the\n"
+    "                estimate\n"
     "\n"
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
     "2 bad input or usage (no file written).\n";
@@ -50,12 +51,14 @@ constexpr const char* kUsage =
 // More windows than this cost more in box work and memory than they can save.
 constexpr unsigned long kMaxWindows = 1000000;
 
-// A scene with shapes: the certified truth's work, refused past the limit unless forced.
-void check_truth_work(const ccd::Scene& scene, const ccd::Trajectories& traj, bool force, const std::string& file) {
+// A scene with shapes: the certified truth's work, refused past the limit unless forced;
+// returns it (the summary prints it).
+double check_truth_work(const ccd::Scene& scene, const ccd::Trajectories& traj, bool force, const std::string& file) {
   const double work = certified_pair_work(ccd::RigidMotion(scene, traj));
   check_work({work, kMaxPairWorkWithoutForce, "certified pair tests",
-              std::to_string(scene.bodies.size()) + " bodies with shapes, candidate pairs x hull sizes x turns"},
+              std::to_string(scene.bodies.size()) + " bodies with shapes, " + kPairWorkDetail},
              force, file, "bodies");
+  return work;
 }
 
 int usage_error(const std::string& what) {
@@ -115,7 +118,7 @@ int run_truth(std::span<const std::string> args) {
                                   "a body bouncing ever faster or too fast for its box)");
       }
     }();
-    if (scene.has_non_spheres()) check_truth_work(scene, traj, force, scene_path);
+    const double work = scene.has_non_spheres() ? check_truth_work(scene, traj, force, scene_path) : 0.0;
     const auto built = std::chrono::steady_clock::now();
     doing = "computing the ground truth of " + std::to_string(scene.bodies.size()) + " bodies" +
             (options.windows ? " in " + std::to_string(options.windows) + " windows" : std::string());
@@ -159,6 +162,9 @@ int run_truth(std::span<const std::string> args) {
                 << ") against "
                 << scene.scenery.size() << " polygons\n";
     }
+    if (scene.has_non_spheres())
+      std::cout << "work         " << work_number(work) << " certified pair tests estimated (limit "
+                << work_number(kMaxPairWorkWithoutForce) << " without --force)\n";
     char time_text[160];
     std::snprintf(time_text, sizeof time_text, "%.3f s: load %.3f s, trajectories %.3f s, truth %.3f s (%u threads)",
                   secs(start, done), secs(start, loaded), secs(loaded, built), secs(built, done), st.threads);

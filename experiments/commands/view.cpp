@@ -5,6 +5,7 @@
 
 #include "../view_data.hpp"
 #include "../view_page.hpp"
+#include "../work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>
@@ -15,6 +16,7 @@
 #include <ccd/truth/truth_io.hpp>
 
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <optional>
@@ -22,6 +24,10 @@
 
 namespace ccdlab {
 namespace {
+
+// The bytes of each input (scene or frames, results, truth) read without --force: the
+// page holds all of it and its parsed form several times over.
+constexpr double kMaxViewInputBytes = 1e8;
 
 constexpr const char* kUsage =
     "usage: ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o VIEW.html [--force]\n"
@@ -39,8 +45,10 @@ constexpr const char* kUsage =
     "  --truth TRUTH.json    the scene's ground truth (ccdlab truth -o): its contacts are drawn\n"
     "  -o VIEW.html          the page (written atomically; checked before the work)\n"
     "  --force               build a page of more than 5e6 entries (trajectory pieces and\n"
-    "                        sampled poses of free spins, about 150 bytes each); without it\n"
-    "                        such a scene is refused before the work with the estimate\n"
+    "                        sampled poses of free spins, or a cloth run's particle positions\n"
+    "                        over its frames, about 150 bytes each) or read an input of more\n"
+    "                        than 1e8 bytes; without it such work is refused before it starts\n"
+    "                        with the estimate\n"
     "\n"
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
 
@@ -77,6 +85,10 @@ int run_view(std::span<const std::string> args) {
     if (!results_path.empty()) inputs.push_back(results_path);
     if (!truth_path.empty()) inputs.push_back(truth_path);
     ccd::OutputFile output(out_path, inputs);
+    // Each input's size before it is read (a missing file or a device is named by its reader).
+    for (const std::string& input : inputs)
+      if (std::error_code ec; std::filesystem::is_regular_file(input, ec))
+        check_input_file(input, kMaxViewInputBytes, force);
     // A binary scene (ccd/scene/scene_binary.hpp) is a body scene; anything else is JSON.
     const bool binary = ccd::is_binary_scene_file(scene_path);
     const nlohmann::json scene_json = binary ? nlohmann::json() : ccd::read_json_file(scene_path);
@@ -85,7 +97,7 @@ int run_view(std::span<const std::string> args) {
     if (format && *format == "ccdlab-cloth-frames/1") {
       if (!results_path.empty() || !truth_path.empty())
         return usage_error("--results and --truth are for body scenes, not for cloth frames");
-      data = cloth_view_data(scene_json, scene_path);
+      data = cloth_view_data(scene_json, scene_path, force);
     } else if (format && *format == "ccdlab-cloth/1") {
       throw ccd::InputError(scene_path, "format",
                             "a cloth scene is shown from its frames: run `ccdlab cloth " + scene_path +

@@ -183,6 +183,62 @@ TEST_CASE("every command estimates its work up front and refuses absurd work wit
     CHECK_FALSE(fs::exists(dir / "F"));
     CHECK_FALSE(fs::exists(dir / "Q"));
   }
+  SECTION("run of a cloth experiment of a 1000 x 1000 grid for 10^6 steps, and of too many jobs") {
+    const std::string e = write(dir, "big.json", R"({"format": "ccdlab-cloth-experiment/1", "name": "big",
+      "scene": "drape", "n": 1000, "steps": 1000000, "k": [1]})");
+#ifdef CCDLAB_SANITIZED  // AddressSanitizer reserves terabytes of shadow: no address-space limit there
+    Run r = cli(dir, "run " + e + " -o " + out);
+#else  // refused before the grid is simulated: 4 GB is far below what it would take
+    Run r = cli(dir, "run " + e + " -o " + out, "ulimit -v 4000000; ");
+#endif
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab run: " + e + ": steps: needs 1e+12 particle-steps (1000 x 1000 particles, 1000000 "
+                   "steps), above the limit 1e+09 without --force\n");
+    // A small run repeated 1000 times over 2 cullers x 2 modes x 5 k: 4.1e+10 particle-steps of checks.
+    const std::string jobs = write(dir, "jobs.json", R"({"format": "ccdlab-cloth-experiment/1", "name": "jobs",
+      "scene": "drape", "n": 64, "steps": 500, "k": [1, 2, 4, 8, 16], "cullers": ["bvh", "bvh_cones"],
+      "repeats": 1000})");
+    r = cli(dir, "run " + jobs + " -o " + out);
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab run: " + jobs + ": repeats: needs 4.1e+10 particle-steps of checks (64 x 64 particles, "
+                   "500 steps, 20 jobs x 1000 repeats), above the limit 1e+10 without --force\n");
+    CHECK_FALSE(fs::exists(out));
+    CHECK_FALSE(fs::exists(dir / "cloth-truth"));
+  }
+  SECTION("mesh-frames of a 1000 x 1000 run at step 10^6, and of 5e7 generated faces") {
+    Run r = cli(dir, "mesh-frames drape --n 1000 --step 1000000 -o " + (dir / "F"));
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab mesh-frames: drape: --step: needs 1e+12 particle-steps (1000 x 1000 particles, 1000001 "
+                   "steps), above the limit 1e+09 without --force\n");
+    r = cli(dir, "mesh-frames tori --faces 50000000 -o " + (dir / "F"));
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab mesh-frames: tori: --faces: needs 5e+07 faces (--faces 50000000), above the limit 1e+07 "
+                   "without --force\n");
+    CHECK_FALSE(fs::exists(dir / "F"));
+  }
+  SECTION("view of a huge cloth frames file, and of frames past the page's entries") {
+    // 2e8 bytes (sparse: no disk is used): refused by its size before a byte is read.
+    const std::string huge = write(dir, "huge.json", "");
+    fs::resize_file(huge, 200000000);
+    Run r = cli(dir, "view " + huge + " -o " + (dir / "v.html"));
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab view: " + huge + ": needs 2e+08 bytes of input (the file's size), above the limit 1e+08 "
+                   "without --force\n");
+    // 6 frames of 1000 x 1000 particles: 6e6 positions, refused before any is read.
+    json frames = {{"format", "ccdlab-cloth-frames/1"}, {"nx", 1000}, {"ny", 1000}, {"triangles", json::array()},
+                   {"frames", json::array()}};
+    for (int k = 0; k < 6; ++k) frames["frames"].push_back({{"t", k}, {"x", json::array()}});
+    const std::string many = write(dir, "many.json", frames.dump());
+    r = cli(dir, "view " + many + " -o " + (dir / "v.html"));
+    CHECK(r.status == 2);
+    CHECK(r.err == "ccdlab view: " + many + ": frames: needs 6e+06 page entries (6 frames of 1000 x 1000 particles), "
+                   "above the limit 5e+06 without --force\n");
+    // Forced, the frames are read (and these are bad: their positions are missing).
+    r = cli(dir, "view " + many + " --force -o " + (dir / "v.html"));
+    CHECK(r.status == 2);
+    CHECK(r.err.find("frames[0].x: must hold 3 nx ny = 3000000 coordinates") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir / "v.html"));
+  }
   SECTION("ccd of /dev/zero and of a folder; import of a folder") {
     Run r = cli(dir, "ccd /dev/zero --kind vf -o " + out);
     CHECK(r.status == 2);

@@ -95,3 +95,38 @@ def test_mp4_with_ffmpeg(run_files, cli):
                             "-show_entries", "stream=nb_read_frames", "-of", "csv=p=0", str(out)],
                            capture_output=True, text=True, check=True)
     assert int(probe.stdout.strip()) == 7
+
+
+def many_bodies(n):
+    """n bodies at rest, apart: the scene of no results file (its digest is checked after the estimate)."""
+    return {"format": "ccdlab-scene/1", "horizon": 1.0,
+            "bodies": [{"radius": 0.1, "position": [i, 0, 0], "velocity": [0, 0, 0]} for i in range(n)]}
+
+
+@pytest.mark.parametrize("scene_of, args, message", [
+    (lambda: SCENE, ["--dt", "0.001"],
+     "--from, --to: needs 6e+03 frames (1 s at dt = 0.001, 6 frames per step), above the limit 2e+03 without --force"),
+    (lambda: many_bodies(3000), ["--dt", "0.125", "--frames-per-step", "100"],
+     "bodies: needs 2.4e+06 body-frames (3000 bodies x 801 frames), above the limit 2e+06 without --force"),
+    (lambda: SCENE, ["--dt", "1e-11", "--from", "0", "--to", "1e-9"],
+     "--dt: needs 3e+11 body-steps (3 bodies, 100000000000 steps at dt = 1e-11), above the limit 1e+11 "
+     "without --force"),
+])
+def test_work_estimate_refuses_up_front(run_files, cli, tmp_path, scene_of, args, message):
+    folder, _, results = run_files
+    scene = write_json(tmp_path / "scene.json", scene_of())
+    out = tmp_path / "big.gif"
+    run = cli("animate", scene, "--results", results, "--method", "aabb/brute", "-o", out, *args, check=False)
+    assert run.returncode == 2
+    assert run.stderr == f"ccdlab animate: {scene}: {message}\n"
+    assert not out.exists() and list(tmp_path.iterdir()) == [scene]
+
+
+def test_force_lifts_the_estimate(run_files, cli, tmp_path):
+    # Forced, the 3,000 bodies pass the estimate and reach the next check (the results are of
+    # another scene): the estimate, not the drawing, refused them before.
+    folder, _, results = run_files
+    scene = write_json(tmp_path / "scene.json", many_bodies(3000))
+    run = cli("animate", scene, "--results", results, "--method", "aabb/brute", "--dt", "0.125",
+              "--frames-per-step", "100", "--force", "-o", tmp_path / "big.gif", check=False)
+    assert run.returncode == 2 and "truth.scene_sha256" in run.stderr and "body-frames" not in run.stderr

@@ -7,6 +7,7 @@
 #include <ccd/scene/scene_io.hpp>
 
 #include <catch2/catch.hpp>
+#include <cmath>
 
 using ccd::Vec3;
 using nlohmann::json;
@@ -112,4 +113,49 @@ TEST_CASE("bad spin and mass fields name the file, the field and the index", "[s
     expected = "s.json: bodies[0].spin: needs format \"ccdlab-scene/2\"";
   }
   CHECK(error_of(j) == expected);
+}
+
+namespace {
+
+// n (even) points on the unit sphere: a Fibonacci spiral of n / 2 and their opposites, so
+// the hull's centre of mass is at the origin (as free spin needs).
+json sphere_points(int n) {
+  json points = json::array();
+  for (int i = 0; i < n / 2; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / (n / 2), r = std::sqrt(1.0 - z * z), a = 2.399963229728653 * i;
+    points.push_back({r * std::cos(a), r * std::sin(a), z});
+    points.push_back({-r * std::cos(a), -r * std::sin(a), -z});
+  }
+  return points;
+}
+
+json free_hull_scene(int points) {
+  return {{"format", "ccdlab-scene/2"},
+          {"horizon", 1.0},
+          {"shapes", {{{"name", "ball"}, {"kind", "hull"}, {"points", sphere_points(points)}}}},
+          {"bodies",
+           {{{"shape", "ball"}, {"position", {0, 0, 0}}, {"spin", "free"}, {"angular_velocity", {1, 2, 3}}},
+            {{"shape", "ball"}, {"position", {5, 0, 0}}, {"spin", "free"}, {"angular_velocity", {3, 2, 1}}}}}};
+}
+
+}  // namespace
+
+TEST_CASE("a free hull's mass properties: thousands of points load, a huge hull is refused before them",
+          "[scene][spin][hostile]") {
+  // 4,000 points: about 4e13 point tests by triples, 3e7 face tests by the incremental hull.
+  const ccd::Scene s = ccd::scene_from_json(free_hull_scene(4000), "s.json");
+  Vec3 moments;
+  Eigen::Matrix3d axes;
+  s.principal_inertia(0, moments, axes);
+  // A ball of radius 1 and density 1000 has I = 2/5 m = 1675.5; the inscribed hull a little less.
+  CHECK(moments.maxCoeff() < 1675.6);
+  CHECK(moments.minCoeff() > 0.99 * 1675.5);
+  // 200,000 points: refused by their count, before any face is computed.
+  CHECK(error_of(free_hull_scene(200000)) ==
+        "s.json: bodies[0].spin: free spin computes the mass properties of \"ball\" from its points, at most 5000 "
+        "(it has 200000); give inertia, or fewer points");
+  // With inertia given, nothing is computed from the points: the scene loads.
+  json given = free_hull_scene(200000);
+  for (json& b : given["bodies"]) b["inertia"] = {1, 1, 1};
+  CHECK(error_of(given).empty());
 }
