@@ -2,8 +2,9 @@
 // The work a command is about to do, estimated before any of it, and the one check that
 // refuses absurd work up front unless --force is given (docs/formats.md, "Work estimates and `--force`").
 // Every command that computes (run, truth, view, poses, cloth, cloth frames, cloth queries,
-// ccd, import) states its work in its own unit (body-steps, certified pair tests, page
-// entries, particle-steps, queries, bytes) against a limit of that unit; past the limit
+// ccd, import, mesh-frames; animate in scripts/animate.py, in the same words) states its
+// work in its own unit (body-steps, certified pair tests, page entries, particle-steps,
+// faces, frames, queries, bytes) against a limit of that unit; past the limit
 // the command exits 2 with the estimate, naming what makes it large, before it allocates
 // or writes anything.
 #include <ccd/motion/rigid_motion.hpp>
