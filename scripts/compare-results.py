@@ -6,7 +6,9 @@ usage: scripts/compare-results.py EXPECTED.json ACTUAL.json
 Compares the experiment, the scene, the ground truth's counts and every record, field by
 field, and ignores what legitimately differs between two runs of one experiment: timings
 (every field whose name contains `seconds`), `environment` (host, threads, build),
-`shard`, `peak_memory_bytes` and where the ground truth came from (`truth.source`).
+`shard`, `peak_memory_bytes` and where the ground truth came from (`truth.source`). A count
+added to the format later (`undecided`, `static_undecided`) reads as 0 where a file lacks it,
+as the library's results reader does.
 A sharded run merged with `ccdlab merge` must equal a single run of the same experiment.
 Prints one line (`same: N records` or the first differences) and exits 0 when equal,
 1 when not, 2 on unreadable input.
@@ -16,6 +18,8 @@ import sys
 
 IGNORED_TOP = {"environment", "shard", "peak_memory_bytes"}
 IGNORED_TRUTH = {"source"}
+# Counts newer than some files: absent reads as 0 (experiments/results_file.cpp does the same).
+DEFAULT_ZERO = {"undecided", "static_undecided", "undecided_events"}
 
 
 def strip(value):
@@ -31,6 +35,8 @@ def differences(a, b, where, out):
     if isinstance(a, dict) and isinstance(b, dict):
         for k in sorted(set(a) | set(b)):
             if k not in a or k not in b:
+                if k in DEFAULT_ZERO and (a if k in a else b)[k] == 0:
+                    continue
                 out.append(f"{where}.{k}: only in {'expected' if k in a else 'actual'}")
             else:
                 differences(a[k], b[k], f"{where}.{k}", out)
