@@ -14,29 +14,23 @@ namespace ccd::earliest {
 // Tests the reported pairs and queues a check for each that may touch (not before now).
 void EarliestRun::test_pairs(double now) {
   if (inline_checks_) pending_.reserve(pending_.size() + (wrapped_ ? image_pairs_.size() : pairs_.size()));
+  // One pair: x and y are the slots checked (bodies, or images when the scene wraps around),
+  // a and b the bodies whose versions date the check.
+  const auto test = [&](std::uint32_t x, std::uint32_t y, std::uint32_t a, std::uint32_t b) {
+    ++stats_.pair_checks;
+    const PairTest r = s_.bound.test(std::min(x, y), std::max(x, y));
+    if (!r.possible()) return;
+    ++stats_.passed;
+    const Window w = common_window(s_.bound.window(x), s_.bound.window(y));
+    const double t = std::max(r.earliest, now);
+    if (inline_checks_) pending_.push_back({t, x, y, w.t0, w.t1});
+    else queue_.push({t, Kind::Check, x, y, version_[a], version_[b], w.t0});
+  };
   if (wrapped_) {
-    for (const ImagePair& q : image_pairs_) {
-      ++stats_.pair_checks;
-      const PairTest r = s_.bound.test(std::min(q.x, q.y), std::max(q.x, q.y));
-      if (!r.possible()) continue;
-      ++stats_.passed;
-      const Window w = common_window(s_.bound.window(q.x), s_.bound.window(q.y));
-      const double t = std::max(r.earliest, now);
-      if (inline_checks_) pending_.push_back({t, q.x, q.y, w.t0, w.t1});
-      else queue_.push({t, Kind::Check, q.x, q.y, version_[q.a], version_[q.b], w.t0});
-    }
+    for (const ImagePair& q : image_pairs_) test(q.x, q.y, q.a, q.b);
     return;
   }
-  for (const BodyPair& p : pairs_) {
-    ++stats_.pair_checks;
-    const PairTest r = s_.bound.test(p.a, p.b);
-    if (!r.possible()) continue;
-    ++stats_.passed;
-    const Window w = common_window(s_.bound.window(p.a), s_.bound.window(p.b));
-    const double t = std::max(r.earliest, now);
-    if (inline_checks_) pending_.push_back({t, p.a, p.b, w.t0, w.t1});
-    else queue_.push({t, Kind::Check, p.a, p.b, version_[p.a], version_[p.b], w.t0});
-  }
+  for (const BodyPair& p : pairs_) test(p.a, p.b, p.a, p.b);
 }
 
 // A speed re-check from both bodies' states at c.t (no bound built), then the narrow phase
