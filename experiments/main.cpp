@@ -69,12 +69,9 @@ int main(int argc, char** argv) {
     if (c.name != args[0]) continue;
     std::snprintf(g_command, sizeof g_command, "ccdlab %.*s", static_cast<int>(c.name.size()), c.name.data());
     std::vector<std::string> rest(args.begin() + 1, args.end());
-    if (ccdlab::wants_help(rest)) {
-      std::cout << c.usage;
-      return 0;
-    }
-    // Each command reports its own errors; this is the last line of defence, so that no
-    // exception ends the process without a message (and without removing temporaries).
+    // Each command parses its arguments (--help included) and reports its own errors; this
+    // is the last line of defence, so that no exception ends the process without a message
+    // (and without removing temporaries).
     try {
       return c.run(rest);
     } catch (const std::bad_alloc&) {

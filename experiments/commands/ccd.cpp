@@ -1,11 +1,13 @@
 // `ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json]`: runs triangle CCD queries stored in the
 // public CCD benchmark's format and measures misses, false positives and time per query.
 #include "command.hpp"
+#include "command_line.hpp"
 #include "mesh_ccd_command.hpp"
 
 #include "../work_estimate.hpp"
 
 #include <cloth/ccd/hard_queries.hpp>
+#include <cloth/cull/cullers.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 #include <cloth/io/query_file.hpp>
@@ -31,14 +33,6 @@ using ccd::cloth::PrimitivePair;
 // is ten million queries or more (minutes of the inclusion kernel, hours exactly).
 constexpr double kMaxQueryFileBytes = 1e9;
 
-std::optional<double> parse_non_negative(const std::string& s) {
-  if (s.empty()) return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || !std::isfinite(v) || v < 0) return std::nullopt;
-  return v;
-}
-
 // Quantile q of sorted values (nearest rank).
 double quantile(const std::vector<double>& sorted, double q) {
   if (sorted.empty()) return 0.0;
@@ -52,55 +46,125 @@ std::string micros(double seconds) {
   return buf;
 }
 
-int run_ccd(std::span<const std::string> args) {
-  if (is_mesh_ccd_call(args)) return run_mesh_ccd(args);  // two mesh frames (mesh_ccd.cpp)
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab ccd: " << msg << " (see ccdlab ccd --help)\n";
-    return kExitBadInput;
-  };
-  std::string input, out_path, kind_text;
-  bool exact = false, write_hard = false, force = false;
-  ccd::cloth::TriangleCcdOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return usage_error("-o needs a file name");
-      out_path = args[++i];
-    } else if (a == "--kind") {
-      if (!has_value) return usage_error("--kind needs vf or ee");
-      kind_text = args[++i];
-    } else if (a == "--separation") {
-      const auto v = has_value ? parse_non_negative(args[++i]) : std::nullopt;
-      if (!v) return usage_error("--separation needs a finite number >= 0");
-      options.separation = *v;
-    } else if (a == "--tolerance") {
-      const auto v = has_value ? parse_non_negative(args[++i]) : std::nullopt;
-      if (!v) return usage_error("--tolerance needs a finite number >= 0");
-      options.tolerance = *v;
-    } else if (a == "--max-boxes") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 1, 1u << 30) : std::nullopt;
-      if (!v) return usage_error("--max-boxes needs an integer in [1, 2^30]");
-      options.max_boxes = static_cast<std::uint32_t>(*v);
-    } else if (a == "--exact") {
-      exact = true;
-    } else if (a == "--write-hard") {
-      write_hard = true;
-    } else if (a == "--force") {
-      force = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (input.empty()) {
-      input = a;
-    } else {
-      return usage_error("one query file only");
-    }
+constexpr const char* kDescription =
+    "Query files (FILE.csv): reads queries in the public CCD benchmark's format (8 rows per\n"
+    "query, 7 integer columns: numerator and denominator of x, y, z, then the expected 0/1\n"
+    "result; rows v, f0, f1, f2 or ea0, ea1, eb0, eb1 at t = 0, then the same at t = 1), runs\n"
+    "each one with the conservative inclusion kernel (or, with --exact, the exact rational\n"
+    "reference) and prints false negatives, false positives and the time per query (median,\n"
+    "p99.9, max). -o writes JSON with `results` (0/1 per query, in file order) and `seconds`\n"
+    "(per query).\n"
+    "\n"
+    "Mesh frames (FRAME0 FRAME1: PLY or OBJ files of one triangle mesh, same faces; every vertex\n"
+    "moves linearly from FRAME0 at t = 0 to FRAME1 at t = 1): finds the vertex-face and edge-edge\n"
+    "pairs that come within the separation, and the earliest time of impact (docs/mesh-ccd.md).\n"
+    "Prints a summary; -o writes ccdlab-mesh-ccd/1 JSON (docs/formats.md).\n"
+    "\n"
+    "usage: ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json] [--separation D] [--tolerance T]\n"
+    "                  [--max-boxes N] [--exact] [--force]\n"
+    "       ccdlab ccd --write-hard --kind vf|ee -o FILE.csv\n"
+    "       ccdlab ccd FRAME0 FRAME1 [-o OUT.json] [--separation D] [--cull NAME] [--threads N]\n"
+    "                  [--exact] [--quiet]\n";
+
+// The options of both modes; those of one mode are refused in the other.
+struct CcdArguments {
+  std::vector<std::string> files;
+  std::string out_path, kind_text;
+  bool exact = false, write_hard = false, force = false, quiet = false;
+  ccd::cloth::TriangleCcdOptions query;
+  MeshCcdArgs mesh;
+  std::vector<CLI::Option*> query_only, mesh_only;
+};
+
+void declare_ccd_options(CommandLine& cli, CcdArguments& a) {
+  cli.positionals("FILES", a.files, "a query file FILE.csv, or two mesh frames FRAME0 FRAME1 (.ply, .obj)", false);
+  cli.text("-o,--output", a.out_path, "OUT.json", "the results as JSON (written atomically; '-' = stdout)",
+           "-o needs a file name");
+  cli.number("--separation", 0.0, false, "D", "minimum separation (default 0): contact means distance <= D",
+             [&a](double d) { a.query.separation = a.mesh.options.separation = d; });
+  cli.flag("--exact", a.exact,
+           "query files: run the exact rational reference instead of the kernel;\n"
+           "mesh frames: decide every kernel hit exactly and list the kernel's false positives");
+  a.query_only = {
+      cli.text("--kind", a.kind_text, "vf|ee", "query files: vertex-face or edge-edge queries", "--kind needs vf or ee"),
+      cli.number("--tolerance", 0.0, false, "T",
+                 "query files: image width counted as contact, relative to the query's extent (1e-9)",
+                 [&a](double t) { a.query.tolerance = t; }),
+      cli.integer("--max-boxes", 1, std::uint64_t{1} << 30, "N",
+                  "query files: budget of parameter boxes per query (20000); spent = contact",
+                  [&a](std::uint64_t n) { a.query.max_boxes = static_cast<std::uint32_t>(n); }),
+      cli.flag("--write-hard", a.write_hard,
+               "write ccdlab's hand-built hard queries to -o FILE.csv (expected result decided\n"
+               "exactly); takes no query file"),
+      cli.flag("--force", a.force,
+               "query files: read one larger than 1e9 bytes (refused before the work\n"
+               "otherwise); FILE.csv must be a regular file (not a folder or a device)")};
+  a.mesh_only = {
+      cli.text("--cull", a.mesh.options.culler, "NAME",
+               "mesh frames: broad phase: mesh_sweep (default), brute, bvh, bvh_cones, sensors,\n"
+               "boxes:<broad phase>[:options] (ccdlab methods lists the broad phases)",
+               "--cull needs a culler name"),
+      cli.integer("--threads", 0, 1024, "N", "mesh frames: threads (default 0: one per core); results do not depend on it",
+                  [&a](std::uint64_t n) { a.mesh.options.threads = static_cast<unsigned>(n); }),
+      cli.flag("-q,--quiet", a.quiet, "mesh frames: no progress on standard error")};
+}
+
+// The mesh mode's arguments, checked.
+MeshCcdArgs mesh_arguments(const CommandLine& cli, CcdArguments& a) {
+  for (const CLI::Option* o : a.query_only)
+    if (o->count() > 0)
+      cli.fail(option_name(o->get_name()) + " is for query files (ccdlab ccd FILE.csv), not for mesh frames");
+  if (a.files.size() != 2) cli.fail("mesh CCD needs two frame files, FRAME0 and FRAME1");
+  if (ccd::cloth::find_culler(a.mesh.options.culler) == nullptr) {
+    std::string names;
+    for (const auto& c : ccd::cloth::cullers()) names += (names.empty() ? "" : ", ") + c.name;
+    cli.fail("unknown culler '" + a.mesh.options.culler + "' (" + names + ", boxes:<broad phase>[:options])");
   }
-  if (kind_text != "vf" && kind_text != "ee") return usage_error("--kind vf or --kind ee is required");
-  const PrimitivePair kind = kind_text == "vf" ? PrimitivePair::VertexFace : PrimitivePair::EdgeEdge;
+  MeshCcdArgs p = a.mesh;
+  p.frame0 = a.files[0];
+  p.frame1 = a.files[1];
+  p.out_path = a.out_path;
+  p.options.exact = a.exact;
+  p.quiet = a.quiet;
+  return p;
+}
+
+int run_ccd(std::span<const std::string> args) {
+  CommandLine cli("ccd", kDescription, "ccd");
+  cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
+  CcdArguments a;
+  declare_ccd_options(cli, a);
+  bool mesh = false;
+  try {
+    if (!cli.parse(args)) return 0;
+    mesh = std::any_of(a.files.begin(), a.files.end(), [](const std::string& f) { return is_mesh_file(f); });
+    if (!mesh) {
+      for (const CLI::Option* o : a.mesh_only)
+        if (o->count() > 0)
+          cli.fail(option_name(o->get_name()) + " is for mesh frames (ccdlab ccd FRAME0 FRAME1), not for query files");
+      if (a.kind_text != "vf" && a.kind_text != "ee") cli.fail("--kind vf or --kind ee is required");
+      if (a.files.size() > 1) cli.fail("one query file only");
+    }
+  } catch (...) {
+    return command_failed("ccd");
+  }
+  if (mesh) {  // two mesh frames (mesh_ccd.cpp)
+    MeshCcdArgs p;
+    try {
+      p = mesh_arguments(cli, a);
+    } catch (...) {
+      return command_failed("ccd");
+    }
+    return run_mesh_ccd(std::move(p));
+  }
+  const std::string input = a.files.empty() ? std::string() : a.files[0];
+  const std::string& out_path = a.out_path;
+  const bool exact = a.exact, write_hard = a.write_hard, force = a.force;
+  const ccd::cloth::TriangleCcdOptions& options = a.query;
+  const PrimitivePair kind = a.kind_text == "vf" ? PrimitivePair::VertexFace : PrimitivePair::EdgeEdge;
   try {
     if (write_hard) {
-      if (!input.empty() || out_path.empty()) return usage_error("--write-hard takes no query file and needs -o FILE.csv");
+      if (!input.empty() || out_path.empty()) cli.fail("--write-hard takes no query file and needs -o FILE.csv");
       ccd::OutputFile output(out_path);
       std::vector<ccd::cloth::LinearQuery> queries;
       std::vector<bool> expected;
@@ -112,7 +176,7 @@ int run_ccd(std::span<const std::string> args) {
       std::cout << "queries: " << queries.size() << " written to " << out_path << "\n";
       return 0;
     }
-    if (input.empty()) return usage_error("need a query file");
+    if (input.empty()) cli.fail("need a query file");
     std::optional<ccd::OutputFile> output;
     if (!out_path.empty()) output.emplace(out_path, std::vector<std::string>{input});
     check_input_file(input, kMaxQueryFileBytes, force);  // a regular file, not /dev/zero or a folder
@@ -183,39 +247,6 @@ int run_ccd(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kCcdCommand = {
-    "ccd", "run vertex-face or edge-edge CCD queries from a benchmark query file",
-    "usage: ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json] [--separation D] [--tolerance T]\n"
-    "                  [--max-boxes N] [--exact] [--force]\n"
-    "       ccdlab ccd --write-hard --kind vf|ee -o FILE.csv\n"
-    "       ccdlab ccd FRAME0 FRAME1 [-o OUT.json] [--separation D] [--cull NAME] [--threads N]\n"
-    "                  [--exact] [--quiet]\n"
-    "\n"
-    "Reads queries in the public CCD benchmark's format (8 rows per query, 7 integer columns:\n"
-    "numerator and denominator of x, y, z, then the expected 0/1 result; rows v, f0, f1, f2 or\n"
-    "ea0, ea1, eb0, eb1 at t = 0, then the same at t = 1), runs each one with the conservative\n"
-    "inclusion kernel (or, with --exact, the exact rational reference) and prints false\n"
-    "negatives, false positives and the time per query (median, p99.9, max). -o writes JSON\n"
-    "with `results` (0/1 per query, in file order) and `seconds` (per query).\n"
-    "--separation D   minimum separation (default 0): contact means distance <= D\n"
-    "--tolerance T    image width counted as contact, relative to the query's extent (1e-9)\n"
-    "--max-boxes N    budget of parameter boxes per query (20000); spent = contact\n"
-    "--write-hard     writes ccdlab's hand-built hard queries (expected result decided exactly)\n"
-    "--force          read a query file larger than 1e9 bytes (refused before the work\n"
-    "                 otherwise); FILE.csv must be a regular file (not a folder or a device)\n"
-    "\n"
-    "Mesh frames (FRAME0 FRAME1: PLY or OBJ files of one triangle mesh, same faces; every vertex\n"
-    "moves linearly from FRAME0 at t = 0 to FRAME1 at t = 1): finds the vertex-face and edge-edge\n"
-    "pairs that come within the separation, and the earliest time of impact (docs/mesh-ccd.md).\n"
-    "Prints a summary; -o writes ccdlab-mesh-ccd/1 JSON (docs/formats.md).\n"
-    "--separation D   minimum separation (default 0): contact means distance <= D\n"
-    "--cull NAME      broad phase: mesh_sweep (default), brute, bvh, bvh_cones, sensors,\n"
-    "                 boxes:<broad phase>[:options] (ccdlab methods lists the broad phases)\n"
-    "--threads N      threads (default 0: one per core); results do not depend on it\n"
-    "--exact          decide every kernel hit with the exact rational reference and list the\n"
-    "                 kernel's false positives\n"
-    "--quiet          no progress on standard error\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
-    run_ccd};
+    "ccd", "run vertex-face or edge-edge CCD queries from a benchmark query file", run_ccd};
 
 }  // namespace ccdlab

@@ -5,6 +5,7 @@
 // cloth_queries.cpp.
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include <cloth/cull/cullers.hpp>
 #include <cloth/sim/cloth_simulator.hpp>
@@ -23,53 +24,48 @@
 namespace ccdlab {
 namespace {
 
+constexpr const char* kDescription =
+    "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
+    "state (default 10, and the last) as JSON: triangles, obstacles and per frame the time and\n"
+    "the particle positions (x, y, z per particle).\n"
+    "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n";
+
+constexpr const char* kFooter =
+    "Every form refuses, before the simulation, a run above 1e9 particle-steps (particles x\n"
+    "steps; `queries` simulates the scene's whole run whatever A:B) or one that would keep\n"
+    "more than 4e9 bytes of states, with the estimate; --force runs it anyway.\n"
+    "\n"
+    "The other forms (each with its --help):\n"
+    "  ccdlab cloth frames SCENE -o DIR        every state, for replay (cloth.json, positions.f64)\n"
+    "  ccdlab cloth queries SCENE --steps A:B -o DIR\n"
+    "                                          the CCD queries of steps A to B-1 with exact answers\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).";
+
 int run_cloth(std::span<const std::string> args) {
   if (!args.empty() && args[0] == "frames") return run_cloth_frames(args.subspan(1));
   if (!args.empty() && args[0] == "queries") return run_cloth_queries(args.subspan(1));
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab cloth: " << msg << " (see ccdlab cloth --help)\n";
-    return kExitBadInput;
-  };
   std::string scene_arg, out_path;
   int n = 32, every = 10;
   bool cull = false, force = false;
   std::optional<int> steps;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    auto integer = [&](std::uint64_t lo, std::uint64_t hi) -> std::optional<int> {
-      if (!has_value) return std::nullopt;
-      const auto v = ccd::parse_integer(args[++i], lo, hi);
-      return v ? std::optional<int>(static_cast<int>(*v)) : std::nullopt;
-    };
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return usage_error("-o needs a file name");
-      out_path = args[++i];
-    } else if (a == "--n") {
-      const auto v = integer(4, 1000);
-      if (!v) return usage_error("--n needs an integer in [4, 1000]");
-      n = *v;
-    } else if (a == "--steps") {
-      const auto v = integer(1, 1000000);
-      if (!v) return usage_error("--steps needs an integer in [1, 1000000]");
-      steps = *v;
-    } else if (a == "--every") {
-      const auto v = integer(1, 1000000);
-      if (!v) return usage_error("--every needs an integer in [1, 1000000]");
-      every = *v;
-    } else if (a == "--cull") {
-      cull = true;
-    } else if (a == "--force") {
-      force = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_arg.empty()) {
-      scene_arg = a;
-    } else {
-      return usage_error("one scene only");
-    }
+  CommandLine cli("cloth", kDescription, "cloth");
+  cli.footer(kFooter);
+  cli.positional("SCENE", scene_arg, "drape, twist, pile or a ccdlab-cloth/1 file");
+  cli.text("-o,--output", out_path, "FRAMES.json", "the frames (written atomically)", "-o needs a file name");
+  declare_cloth_scene_options(cli, n, &steps);
+  cli.integer("--every", 1, 1000000, "E", "keep every E-th state (default 10) and the last",
+              [&every](std::uint64_t v) { every = static_cast<int>(v); });
+  cli.flag("--cull", cull,
+           "also run the bvh and bvh_cones cullers on every step interval (continuous,\n"
+           "separation = thickness) and print their candidates and time per step");
+  cli.flag("--force", force, "run past the work limits (below)");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_arg.empty() || out_path.empty()) cli.fail("need a scene (drape, twist, pile or FILE.json) and -o FILE");
+  } catch (...) {
+    return command_failed("cloth");
   }
-  if (scene_arg.empty() || out_path.empty()) return usage_error("need a scene (drape, twist, pile or FILE.json) and -o FILE");
   try {
     const auto names = ccd::cloth::builtin_cloth_scene_names();
     const bool builtin = std::find(names.begin(), names.end(), scene_arg) != names.end();
@@ -150,51 +146,6 @@ int run_cloth(std::span<const std::string> args) {
 
 extern const Command kClothCommand = {
     "cloth", "simulate a cloth scene (drape, twist, pile or a ccdlab-cloth/1 file); write its frames or its CCD queries",
-    "usage: ccdlab cloth drape|twist|pile|SCENE.json -o FRAMES.json [--n N] [--steps K] [--every E] [--cull]\n"
-    "                   [--force]\n"
-    "\n"
-    "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
-    "state (default 10, and the last) as JSON: triangles, obstacles and per frame the time and\n"
-    "the particle positions (x, y, z per particle). --n sets the particles per side of a\n"
-    "built-in scene (default 32); --steps overrides the scene's step count. --cull also\n"
-    "runs the bvh and bvh_cones cullers on every step interval (continuous, separation =\n"
-    "thickness) and prints their candidates and time per step.\n"
-    "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n"
-    "\n"
-    "Every form refuses, before the simulation, a run above 1e9 particle-steps (particles x\n"
-    "steps; `queries` simulates the scene's whole run whatever A:B) or one that would keep\n"
-    "more than 4e9 bytes of states, with the estimate; --force runs it anyway.\n"
-    "\n"
-    "       ccdlab cloth frames drape|twist|pile|SCENE.json -o DIR [--n N] [--steps K] [--force]\n"
-    "\n"
-    "Simulates the cloth and writes the folder DIR (atomically: a temporary folder renamed):\n"
-    "  cloth.json     ccdlab-cloth-motion/1: triangles, edges, springs, obstacles, step, the\n"
-    "                 times of the states and the motion's digest\n"
-    "  positions.f64  the positions at every integrator step: little-endian IEEE-754 doubles,\n"
-    "                 [steps + 1][particles][3] (x, y, z), state 0 first\n"
-    "Reader: /usr/bin/python3 scripts/cloth_frames.py DIR. An existing DIR is replaced only\n"
-    "when it is empty or holds a cloth.json. --n sets the particles per side of a built-in\n"
-    "scene (default 32); --steps overrides the scene's step count.\n"
-    "\n"
-    "       ccdlab cloth queries drape|twist|pile|SCENE.json --steps A:B -o DIR [--culler NAME]\n"
-    "                            [--hard-below D] [--n N] [--threads T] [--force]\n"
-    "\n"
-    "Simulates the cloth and writes, for the step intervals A, A+1, ..., B-1 (interval s runs\n"
-    "from state s to state s + 1, each vertex moving linearly; 0 <= A < B <= the scene's\n"
-    "steps), every vertex-face and edge-edge candidate the culler returns (default bvh_cones,\n"
-    "one instance over the steps, separation = the scene's thickness) into the folder DIR\n"
-    "(atomically: a temporary folder renamed):\n"
-    "  vf.csv, ee.csv  the public CCD benchmark's layout (8 rows per query; x, y, z as exact\n"
-    "                  numerator, denominator of the doubles; column 7 the exact answer at\n"
-    "                  separation 0 from the rational reference), read by `ccdlab ccd`\n"
-    "  index.json      ccdlab-cloth-queries/1: the motion's digest, the options, and per query\n"
-    "                  its step, primitive ids and mesh vertices\n"
-    "--hard-below D keeps only the queries whose primitives come within distance D (m,\n"
-    "touching included) during their step, decided exactly; the culler then runs with\n"
-    "separation max(thickness, D). --threads T runs the exact reference on T threads (default 1).\n"
-    "An existing DIR is replaced only when it is empty or holds an index.json.\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
     run_cloth};
 
 }  // namespace ccdlab

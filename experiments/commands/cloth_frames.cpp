@@ -3,6 +3,7 @@
 // (docs/cloth.md#cloth-frames-and-queries-out).
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../work_estimate.hpp"
 
@@ -47,41 +48,44 @@ void check_cloth_work(const ccd::cloth::ClothScene& scene, const std::string& ar
              force, arg, field);
 }
 
+void declare_cloth_scene_options(CommandLine& cli, int& n, std::optional<int>* steps) {
+  cli.integer("--n", 4, 1000, "N", "particles per side of a built-in scene (default 32)",
+              [&n](std::uint64_t v) { n = static_cast<int>(v); });
+  if (steps)
+    cli.integer("--steps", 1, 1000000, "K", "override the scene's step count",
+                [steps](std::uint64_t v) { *steps = static_cast<int>(v); });
+}
+
 int run_cloth_frames(std::span<const std::string> args) {
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab cloth frames: " << msg << " (see ccdlab cloth --help)\n";
-    return kExitBadInput;
-  };
   std::string scene_arg, out_path;
   int n = 32;
   bool force = false;
   std::optional<int> steps;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return usage_error("-o needs a folder name");
-      out_path = args[++i];
-    } else if (a == "--n") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 4, 1000) : std::nullopt;
-      if (!v) return usage_error("--n needs an integer in [4, 1000]");
-      n = static_cast<int>(*v);
-    } else if (a == "--steps") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 1, 1000000) : std::nullopt;
-      if (!v) return usage_error("--steps needs an integer in [1, 1000000]");
-      steps = static_cast<int>(*v);
-    } else if (a == "--force") {
-      force = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_arg.empty()) {
-      scene_arg = a;
-    } else {
-      return usage_error("one scene only");
-    }
+  CommandLine cli("cloth frames",
+                  "Simulates the cloth and writes the folder DIR (atomically: a temporary folder renamed):\n"
+                  "  cloth.json     ccdlab-cloth-motion/1: triangles, edges, springs, obstacles, step, the\n"
+                  "                 times of the states and the motion's digest\n"
+                  "  positions.f64  the positions at every integrator step: little-endian IEEE-754 doubles,\n"
+                  "                 [steps + 1][particles][3] (x, y, z), state 0 first\n"
+                  "Reader: /usr/bin/python3 scripts/cloth_frames.py DIR.\n",
+                  "cloth");
+  cli.footer("A run above 1e9 particle-steps or 4e9 bytes of states is refused before the simulation\n"
+             "with the estimate unless --force.\n"
+             "\n"
+             "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
+  cli.positional("SCENE", scene_arg, "drape, twist, pile or a ccdlab-cloth/1 file");
+  cli.text("-o,--output", out_path, "DIR",
+           "the folder; an existing DIR is replaced only when it is empty or holds\n"
+           "a cloth.json",
+           "-o needs a folder name");
+  declare_cloth_scene_options(cli, n, &steps);
+  cli.flag("--force", force, "run past the work limits");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_arg.empty() || out_path.empty()) cli.fail("need a scene (drape, twist, pile or FILE.json) and -o DIR");
+  } catch (...) {
+    return command_failed("cloth frames");
   }
-  if (scene_arg.empty() || out_path.empty())
-    return usage_error("need a scene (drape, twist, pile or FILE.json) and -o DIR");
   try {
     ccd::cloth::ClothScene scene = load_cloth_scene(scene_arg, n);
     if (steps) scene.steps = *steps;

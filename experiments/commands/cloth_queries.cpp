@@ -3,6 +3,7 @@
 // files with exact answers (docs/cloth.md#cloth-frames-and-queries-out).
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include <cloth/cull/cullers.hpp>
 #include <cloth/io/query_export.hpp>
@@ -52,74 +53,74 @@ std::string query_text(const std::vector<ccd::cloth::ExportedQuery>& qs) {
 
 }  // namespace
 
+constexpr const char* kDescription =
+    "Simulates the cloth and writes, for the step intervals A, A+1, ..., B-1 (interval s runs\n"
+    "from state s to state s + 1, each vertex moving linearly; 0 <= A < B <= the scene's\n"
+    "steps), every vertex-face and edge-edge candidate the culler returns (one instance over\n"
+    "the steps, separation = the scene's thickness) into the folder DIR (atomically: a\n"
+    "temporary folder renamed):\n"
+    "  vf.csv, ee.csv  the public CCD benchmark's layout (8 rows per query; x, y, z as exact\n"
+    "                  numerator, denominator of the doubles; column 7 the exact answer at\n"
+    "                  separation 0 from the rational reference), read by `ccdlab ccd`\n"
+    "  index.json      ccdlab-cloth-queries/1: the motion's digest, the options, and per query\n"
+    "                  its step, primitive ids and mesh vertices\n";
+
 int run_cloth_queries(std::span<const std::string> args) {
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab cloth queries: " << msg << " (see ccdlab cloth --help)\n";
-    return kExitBadInput;
-  };
   std::string scene_arg, out_path, culler_name = "bvh_cones", steps_text;
   int n = 32;
   unsigned threads = 1;
   bool force = false;
   std::optional<double> hard_below;
   std::uint64_t first = 0, end = 0;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return usage_error("-o needs a folder name");
-      out_path = args[++i];
-    } else if (a == "--culler") {
-      if (!has_value) return usage_error("--culler needs a name: brute, bvh, bvh_cones, sensors or boxes:<broad phase>");
-      culler_name = args[++i];
-    } else if (a == "--steps") {
-      if (!has_value) return usage_error("--steps needs A:B");
-      steps_text = args[++i];
-      const auto colon = steps_text.find(':');
-      const auto lo = colon == std::string::npos ? std::nullopt
-                                                 : ccd::parse_integer(steps_text.substr(0, colon), 0, 1000000);
-      const auto hi = colon == std::string::npos ? std::nullopt
-                                                 : ccd::parse_integer(steps_text.substr(colon + 1), 1, 1000000);
-      if (!lo || !hi || *lo >= *hi)
-        return usage_error("--steps '" + steps_text + "': needs A:B, integers with 0 <= A < B");
-      first = *lo;
-      end = *hi;
-    } else if (a == "--hard-below") {
-      const std::string v = has_value ? args[++i] : std::string();
-      char* stop = nullptr;
-      const double d = v.empty() ? -1.0 : std::strtod(v.c_str(), &stop);
-      if (v.empty() || stop != v.c_str() + v.size() || !std::isfinite(d) || d < 0)
-        return usage_error("--hard-below needs a distance (m), a finite number >= 0");
-      hard_below = d;
-    } else if (a == "--n") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 4, 1000) : std::nullopt;
-      if (!v) return usage_error("--n needs an integer in [4, 1000]");
-      n = static_cast<int>(*v);
-    } else if (a == "--threads") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 1, 1024) : std::nullopt;
-      if (!v) return usage_error("--threads needs an integer in [1, 1024]");
-      threads = static_cast<unsigned>(*v);
-    } else if (a == "--force") {
-      force = true;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_arg.empty()) {
-      scene_arg = a;
-    } else {
-      return usage_error("one scene only");
-    }
+  CommandLine cli("cloth queries", kDescription, "cloth");
+  cli.footer("The whole run is simulated whatever A:B: above 1e9 particle-steps or 4e9 bytes of states\n"
+             "it is refused before the simulation with the estimate unless --force.\n"
+             "\n"
+             "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
+  cli.positional("SCENE", scene_arg, "drape, twist, pile or a ccdlab-cloth/1 file");
+  cli.text("-o,--output", out_path, "DIR",
+           "the folder; an existing DIR is replaced only when it is empty or holds\n"
+           "an index.json",
+           "-o needs a folder name");
+  cli.value(
+      "--steps", "A:B", "the step intervals A to B-1, integers with 0 <= A < B <= the scene's steps",
+      [&](const std::string& v) {
+        steps_text = v;
+        const auto colon = v.find(':');
+        const auto lo = colon == std::string::npos ? std::nullopt : ccd::parse_integer(v.substr(0, colon), 0, 1000000);
+        const auto hi = colon == std::string::npos ? std::nullopt : ccd::parse_integer(v.substr(colon + 1), 1, 1000000);
+        if (!lo || !hi || *lo >= *hi) cli.fail("--steps '" + v + "': needs A:B, integers with 0 <= A < B");
+        first = *lo;
+        end = *hi;
+      },
+      "--steps needs A:B");
+  cli.text("--culler", culler_name, "NAME",
+           "the culler: brute, bvh, bvh_cones (default), sensors or boxes:<broad phase>",
+           "--culler needs a name: brute, bvh, bvh_cones, sensors or boxes:<broad phase>");
+  cli.number("--hard-below", 0.0, false, "D",
+             "keep only the queries whose primitives come within distance D (m,\n"
+             "touching included) during their step, decided exactly; the culler then runs\n"
+             "with separation max(thickness, D)",
+             [&hard_below](double d) { hard_below = d; });
+  declare_cloth_scene_options(cli, n, nullptr);
+  cli.integer("--threads", 1, 1024, "T", "threads of the exact reference (default 1)",
+              [&threads](std::uint64_t v) { threads = static_cast<unsigned>(v); });
+  cli.flag("--force", force, "run past the work limits");
+  const ccd::cloth::CullerEntry* culler = nullptr;
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_arg.empty() || out_path.empty() || steps_text.empty())
+      cli.fail("need a scene (drape, twist, pile or FILE.json), --steps A:B and -o DIR");
+    culler = ccd::cloth::find_culler(culler_name);
+    if (!culler)
+      cli.fail("--culler: unknown culler '" + culler_name + "' (brute, bvh, bvh_cones, sensors or boxes:<broad phase>)");
+  } catch (...) {
+    return command_failed("cloth queries");
   }
-  if (scene_arg.empty() || out_path.empty() || steps_text.empty())
-    return usage_error("need a scene (drape, twist, pile or FILE.json), --steps A:B and -o DIR");
-  const ccd::cloth::CullerEntry* culler = ccd::cloth::find_culler(culler_name);
-  if (!culler)
-    return usage_error("--culler: unknown culler '" + culler_name +
-                       "' (brute, bvh, bvh_cones, sensors or boxes:<broad phase>)");
   try {
     const ccd::cloth::ClothScene scene = load_cloth_scene(scene_arg, n);
     if (end > static_cast<std::uint64_t>(scene.steps))
-      return usage_error("--steps '" + steps_text + "': B must be <= the scene's " + std::to_string(scene.steps) +
-                         " steps");
+      cli.fail("--steps '" + steps_text + "': B must be <= the scene's " + std::to_string(scene.steps) + " steps");
     // The whole run is simulated and kept (24 bytes a particle and state), whatever A:B.
     check_cloth_work(scene, scene_arg, scene.steps + 1.0, 24.0, force);
     ccd::OutputDirectory output(out_path, "index.json");

@@ -1,6 +1,7 @@
 #pragma once
 // The ccdlab command line: one registry of subcommands. Each subcommand lives in its own
-// file under experiments/commands/ and registers itself in commands.cpp's table.
+// file under experiments/commands/ and registers itself in commands.cpp's table; each
+// parses its arguments, --help included, with CommandLine (command_line.hpp).
 //
 // Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).
 #include <span>
@@ -13,7 +14,6 @@ namespace ccdlab {
 struct Command {
   std::string_view name;
   std::string_view summary;  ///< one line for `ccdlab --help`
-  std::string_view usage;    ///< full text for `ccdlab NAME --help`
   int (*run)(std::span<const std::string> args);  ///< args exclude the command name
 };
 
@@ -23,17 +23,14 @@ std::span<const Command> commands();
 /// Version string "X.Y.Z (git HASH)".
 std::string version_string();
 
-/// True when `args` contains -h or --help.
-bool wants_help(std::span<const std::string> args);
-
 /// Exit status for usage and input errors.
 constexpr int kExitBadInput = 2;
 
 /// Called from a `catch (...)` handler of command NAME: prints "ccdlab NAME: ..." for the
 /// exception being handled and gives the exit status: kExitBadInput for an input error
-/// (ccd::InputError), 1 for running out of memory ("out of memory", then
-/// `out_of_memory_detail`, e.g. what was being done) or another std::exception. Anything
-/// else is rethrown.
+/// (ccd::InputError) or a usage error (UsageError, command_line.hpp), 1 for running out of
+/// memory ("out of memory", then `out_of_memory_detail`, e.g. what was being done) or
+/// another std::exception. Anything else is rethrown.
 int command_failed(std::string_view name, const std::string& out_of_memory_detail = {});
 
 }  // namespace ccdlab

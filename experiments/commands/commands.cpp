@@ -1,9 +1,9 @@
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include <ccd/io/input_error.hpp>
 #include <ccdlab_git_hash.hpp>
 
-#include <algorithm>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -39,6 +39,9 @@ std::string version_string() { return std::string(CCDLAB_VERSION) + " (git " + C
 int command_failed(std::string_view name, const std::string& out_of_memory_detail) {
   try {
     throw;
+  } catch (const UsageError& e) {
+    std::cerr << "ccdlab " << name << ": " << e.what() << "\n";
+    return kExitBadInput;
   } catch (const ccd::InputError& e) {
     std::cerr << "ccdlab " << name << ": " << e.what() << "\n";
     return kExitBadInput;
@@ -50,10 +53,6 @@ int command_failed(std::string_view name, const std::string& out_of_memory_detai
     std::cerr << "ccdlab " << name << ": " << e.what() << "\n";
     return 1;
   }
-}
-
-bool wants_help(std::span<const std::string> args) {
-  return std::any_of(args.begin(), args.end(), [](const std::string& a) { return a == "-h" || a == "--help"; });
 }
 
 }  // namespace ccdlab

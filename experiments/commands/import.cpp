@@ -2,6 +2,7 @@
 // frames from any simulator turned into a scene whose motion is linear between frames
 // (ccd/scene/recorded_frames.hpp, docs/import.md).
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../work_estimate.hpp"
 
@@ -24,7 +25,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kDescription =
     "usage: ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json] [--force]\n"
     "\n"
     "Turns recorded frames (from any simulator) into a scene: between two frames of a body\n"
@@ -38,53 +39,47 @@ constexpr const char* kUsage =
     "A row gives a radius or a shape; rows in any order. Scene time 0 is the file's first\n"
     "time, the horizon its last; every body needs a frame at both. Bodies are ordered by\n"
     "label (numerically when all labels are integers). No walls, no gravity: the\n"
-    "recording holds them. `ccdlab poses` output imports as it is, with --radius.\n"
-    "\n"
-    "  -o SCENE.json        the scene (written atomically; '-' = stdout)\n"
-    "  --radius R           radius of bodies whose rows give no radius and no shape\n"
-    "  --shapes FILE.json   named shapes: a JSON array of shape objects as in a scene's\n"
-    "                       \"shapes\" (docs/formats.md), or a scene file whose shapes are used\n"
-    "  --force              read a FRAMES.csv larger than 2e9 bytes (refused before the work\n"
-    "                       otherwise; it must be a regular file, not a folder or a device)\n"
-    "\n"
+    "recording holds them. `ccdlab poses` output imports as it is, with --radius.\n";
+
+constexpr const char* kFooter =
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written);\n"
-    "a bad row is named by its line and column (frames.csv: line 7: radius: must be > 0).\n";
+    "a bad row is named by its line and column (frames.csv: line 7: radius: must be > 0).";
 
 // A frames file above this many bytes (tens of millions of rows) is refused without --force.
 constexpr double kMaxFramesFileBytes = 2e9;
 
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab import: " << what << " (see ccdlab import --help)\n";
-  return kExitBadInput;
-}
-
 int run_import(std::span<const std::string> args) {
-  std::string csv_path, out_path, shapes_path, radius_text;
+  std::string csv_path, out_path, shapes_path;
   bool force = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--output" || a == "--radius" || a == "--shapes") {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      (a == "--radius" ? radius_text : a == "--shapes" ? shapes_path : out_path) = args[++i];
-    } else if (a == "--force") {
-      force = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (csv_path.empty()) {
-      csv_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
-  }
-  if (csv_path.empty()) return usage_error("missing FRAMES.csv");
-  if (out_path.empty()) return usage_error("missing -o SCENE.json");
   ccd::FrameImportOptions options;
-  if (!radius_text.empty()) {
-    char* end = nullptr;
-    const double r = std::strtod(radius_text.c_str(), &end);
-    if (end != radius_text.c_str() + radius_text.size() || !std::isfinite(r) || !(r > 0.0))
-      return usage_error("--radius must be a number > 0, got '" + radius_text + "'");
-    options.radius = r;
+  CommandLine cli("import", kDescription, "import");
+  cli.footer(kFooter);
+  cli.positional("FRAMES.csv", csv_path, "the recorded frames");
+  cli.text("-o,--output", out_path, "SCENE.json", "the scene (written atomically; '-' = stdout)",
+           "missing value after -o");
+  cli.value(
+      "--radius", "R", "radius of bodies whose rows give no radius and no shape",
+      [&](const std::string& v) {
+        char* end = nullptr;
+        const double r = v.empty() ? 0.0 : std::strtod(v.c_str(), &end);
+        if (v.empty() || end != v.c_str() + v.size() || !std::isfinite(r) || !(r > 0.0))
+          cli.fail("--radius must be a number > 0, got '" + v + "'");
+        options.radius = r;
+      },
+      "missing value after --radius");
+  cli.text("--shapes", shapes_path, "FILE.json",
+           "named shapes: a JSON array of shape objects as in a scene's\n"
+           "\"shapes\" (docs/formats.md), or a scene file whose shapes are used",
+           "missing value after --shapes");
+  cli.flag("--force", force,
+           "read a FRAMES.csv larger than 2e9 bytes (refused before the work\n"
+           "otherwise; it must be a regular file, not a folder or a device)");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (csv_path.empty()) cli.fail("missing FRAMES.csv");
+    if (out_path.empty()) cli.fail("missing -o SCENE.json");
+  } catch (...) {
+    return command_failed("import");
   }
   try {
     std::vector<std::string> inputs = {csv_path};
@@ -123,6 +118,6 @@ int run_import(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kImportCommand = {"import", "recorded frames (CSV from any simulator) to a scene, linear between frames",
-                                       kUsage, run_import};
+                                       run_import};
 
 }  // namespace ccdlab

@@ -1,5 +1,6 @@
 // `ccdlab merge SHARD.json... -o RESULTS.json`
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../results_file.hpp"
 #include "../summary.hpp"
@@ -19,23 +20,22 @@ namespace {
 int run_merge(std::span<const std::string> args) {
   std::vector<std::string> inputs;
   std::string out;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "-o" || args[i] == "--output") {
-      if (i + 1 >= args.size()) {
-        std::cerr << "ccdlab merge: -o needs a file name\n";
-        return kExitBadInput;
-      }
-      out = args[++i];
-    } else if (args[i].size() > 1 && args[i][0] == '-') {
-      std::cerr << "ccdlab merge: unknown option '" << args[i] << "' (see ccdlab merge --help)\n";
-      return kExitBadInput;
-    } else {
-      inputs.push_back(args[i]);
-    }
-  }
-  if (inputs.empty() || out.empty()) {
-    std::cerr << "ccdlab merge: need at least one shard file and -o RESULTS.json (see ccdlab merge --help)\n";
-    return kExitBadInput;
+  CommandLine cli("merge",
+                  "Checks every input as a ccdlab-results/2 file (every field with its type, job indices\n"
+                  "within the experiment and owned by the shard), that all are shards of the same\n"
+                  "experiment, scene (contents, by digest) and ground truth, that no shard appears twice\n"
+                  "and none is missing, and writes one results file ordered by job ('-' = standard\n"
+                  "output; never over an input). Prints the summary table of `ccdlab run` and writes it\n"
+                  "beside the results (RESULTS.summary.md).\n",
+                  "merge");
+  cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
+  cli.positionals("SHARD.json", inputs, "the shard results (ccdlab run --shard K/N), any order");
+  cli.text("-o,--output", out, "RESULTS.json", "the merged results", "-o needs a file name");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (inputs.empty() || out.empty()) cli.fail("need at least one shard file and -o RESULTS.json");
+  } catch (...) {
+    return command_failed("merge");
   }
   try {
     // The results and their summary side-file: both checked against every shard now, and
@@ -66,17 +66,6 @@ int run_merge(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kMergeCommand = {
-    "merge", "join the shard results of one experiment (ccdlab run --shard K/N)",
-    "usage: ccdlab merge SHARD.json... -o RESULTS.json\n"
-    "\n"
-    "Checks every input as a ccdlab-results/2 file (every field with its type, job indices\n"
-    "within the experiment and owned by the shard), that all are shards of the same\n"
-    "experiment, scene (contents, by digest) and ground truth, that no shard appears twice\n"
-    "and none is missing, and writes one results file ordered by job ('-' = standard\n"
-    "output; never over an input). Prints the summary table of `ccdlab run` and writes it\n"
-    "beside the results (RESULTS.summary.md).\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
-    run_merge};
+    "merge", "join the shard results of one experiment (ccdlab run --shard K/N)", run_merge};
 
 }  // namespace ccdlab

@@ -30,77 +30,11 @@
 namespace ccdlab {
 namespace {
 
-// Options of `ccdlab ccd` that take a value (both modes), so their values are not files.
-bool takes_value(const std::string& a) {
-  return a == "-o" || a == "--output" || a == "--kind" || a == "--separation" || a == "--tolerance" ||
-         a == "--max-boxes" || a == "--cull" || a == "--threads";
-}
-
 bool ends_with_nocase(const std::string& s, std::string_view suffix) {
   if (s.size() < suffix.size()) return false;
   for (std::size_t i = 0; i < suffix.size(); ++i)
     if (std::tolower(static_cast<unsigned char>(s[s.size() - suffix.size() + i])) != suffix[i]) return false;
   return true;
-}
-
-bool is_mesh_file(const std::string& path) {
-  if (ends_with_nocase(path, ".ply") || ends_with_nocase(path, ".obj")) return true;
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  return in.read(magic, 4) && magic[0] == 'p' && magic[1] == 'l' && magic[2] == 'y' &&
-         (magic[3] == '\n' || magic[3] == '\r');
-}
-
-struct MeshCcdArgs {
-  std::string frame0, frame1, out_path;
-  ccd::cloth::MeshCcdOptions options;
-  bool quiet = false;
-};
-
-// Parses the arguments; an error message (empty on success).
-std::string parse(std::span<const std::string> args, MeshCcdArgs& p) {
-  std::vector<std::string> files;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return "-o needs a file name";
-      p.out_path = args[++i];
-    } else if (a == "--separation") {
-      char* end = nullptr;
-      const std::string& v = has_value ? args[++i] : a;
-      const double d = std::strtod(v.c_str(), &end);
-      if (!has_value || v.empty() || end != v.c_str() + v.size() || !std::isfinite(d) || d < 0)
-        return "--separation needs a finite number >= 0";
-      p.options.separation = d;
-    } else if (a == "--cull") {
-      if (!has_value) return "--cull needs a culler name";
-      p.options.culler = args[++i];
-      if (ccd::cloth::find_culler(p.options.culler) == nullptr) {
-        std::string names;
-        for (const auto& c : ccd::cloth::cullers()) names += (names.empty() ? "" : ", ") + c.name;
-        return "unknown culler '" + p.options.culler + "' (" + names + ", boxes:<broad phase>[:options])";
-      }
-    } else if (a == "--threads") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 0, 1024) : std::nullopt;
-      if (!v) return "--threads needs an integer in [0, 1024] (0: one per core)";
-      p.options.threads = static_cast<unsigned>(*v);
-    } else if (a == "--exact") {
-      p.options.exact = true;
-    } else if (a == "--quiet" || a == "-q") {
-      p.quiet = true;
-    } else if (a == "--kind" || a == "--tolerance" || a == "--max-boxes" || a == "--write-hard") {
-      return a + " is for query files (ccdlab ccd FILE.csv), not for mesh frames";
-    } else if (a.size() > 1 && a[0] == '-') {
-      return "unknown option '" + a + "'";
-    } else {
-      files.push_back(a);
-    }
-  }
-  if (files.size() != 2) return "mesh CCD needs two frame files, FRAME0 and FRAME1";
-  p.frame0 = files[0];
-  p.frame1 = files[1];
-  return {};
 }
 
 std::string seconds_text(double s) {
@@ -133,23 +67,15 @@ void print_summary(std::ostream& out, const ccd::cloth::MeshCcdResult& r, const 
 
 }  // namespace
 
-bool is_mesh_ccd_call(std::span<const std::string> args) {
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (takes_value(args[i])) {
-      ++i;
-      continue;
-    }
-    if (!args[i].empty() && args[i][0] != '-' && is_mesh_file(args[i])) return true;
-  }
-  return false;
+bool is_mesh_file(const std::string& path) {
+  if (ends_with_nocase(path, ".ply") || ends_with_nocase(path, ".obj")) return true;
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  return in.read(magic, 4) && magic[0] == 'p' && magic[1] == 'l' && magic[2] == 'y' &&
+         (magic[3] == '\n' || magic[3] == '\r');
 }
 
-int run_mesh_ccd(std::span<const std::string> args) {
-  MeshCcdArgs p;
-  if (const std::string error = parse(args, p); !error.empty()) {
-    std::cerr << "ccdlab ccd: " << error << " (see ccdlab ccd --help)\n";
-    return kExitBadInput;
-  }
+int run_mesh_ccd(MeshCcdArgs p) {
   try {
     std::optional<ccd::OutputFile> output;
     const std::string inputs[] = {p.frame0, p.frame1};

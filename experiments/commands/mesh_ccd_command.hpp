@@ -1,16 +1,25 @@
 #pragma once
 // `ccdlab ccd FRAME0 FRAME1 ...`: mesh CCD between two frame files (mesh_ccd.cpp). The
-// `ccd` command (ccd.cpp) hands its arguments here when a positional argument is a mesh
-// file: a name ending in .ply or .obj (any case), or a file whose first line is `ply`.
-#include <span>
+// `ccd` command (ccd.cpp) parses the arguments of both modes and runs this one when a
+// positional argument is a mesh file: a name ending in .ply or .obj (any case), or a file
+// whose first line is `ply`.
+#include <cloth/mesh_ccd/mesh_ccd.hpp>
+
 #include <string>
 
 namespace ccdlab {
 
-/// True when `args` (those of `ccdlab ccd`) name a mesh frame file.
-bool is_mesh_ccd_call(std::span<const std::string> args);
+/// What `ccdlab ccd FRAME0 FRAME1 [options]` was given.
+struct MeshCcdArgs {
+  std::string frame0, frame1, out_path;
+  ccd::cloth::MeshCcdOptions options;
+  bool quiet = false;
+};
 
-/// Runs the mesh mode; the exit status (0, 1, or 2 for bad input or usage).
-int run_mesh_ccd(std::span<const std::string> args);
+/// True when `path` names a mesh frame file.
+bool is_mesh_file(const std::string& path);
+
+/// Runs the mesh mode; the exit status (0, 1, or 2 for bad input).
+int run_mesh_ccd(MeshCcdArgs p);
 
 }  // namespace ccdlab

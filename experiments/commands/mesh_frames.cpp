@@ -5,6 +5,7 @@
 // a ccdlab-cloth/1 file, N particles per side): its states K and K + 1.
 #include "cloth_subcommands.hpp"
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../work_estimate.hpp"
 
@@ -50,52 +51,49 @@ ccd::cloth::MeshFramePair cloth_frames(const std::string& scene_arg, int n, int 
   return m;
 }
 
+constexpr const char* kDescription =
+    "Writes DIR/frame0.ply and DIR/frame1.ply (binary little-endian, double coordinates; --ascii\n"
+    "for text), one triangle mesh at t = 0 and t = 1, for `ccdlab ccd DIR/frame0.ply DIR/frame1.ply`\n"
+    "(docs/mesh-ccd.md). The folder appears whole or not at all; an existing one is replaced only\n"
+    "when it is empty or was written by this command.\n"
+    "\n"
+    "NAME is a generator:\n"
+    "  sheet_on_sphere  a sheet falling into a sphere\n"
+    "  tori             two linked tori, apart at t = 0, twisting and cutting through each other\n"
+    "  crumpled         a bumpy sheet folding through itself (--seed S, default 1)\n"
+    "or a cloth run (drape, twist, pile, SCENE.json; docs/cloth.md) with N particles per side\n"
+    "(--n, default 32): the frames are its states K and K + 1 (--step K, default 0).\n";
+
 int run_mesh_frames(std::span<const std::string> args) {
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab mesh-frames: " << msg << " (see ccdlab mesh-frames --help)\n";
-    return kExitBadInput;
-  };
   std::string name, out_path;
   std::uint64_t faces = 1000, seed = 1;
   int n = 32, step = 0;
-  bool force = false;
+  bool force = false, ascii = false;
   ccd::cloth::PlyEncoding encoding;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const bool has_value = i + 1 < args.size();
-    if (a == "-o" || a == "--output") {
-      if (!has_value) return usage_error("-o needs a folder name");
-      out_path = args[++i];
-    } else if (a == "--faces") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 8, std::uint64_t{1} << 26) : std::nullopt;
-      if (!v) return usage_error("--faces needs an integer in [8, 2^26]");
-      faces = *v;
-    } else if (a == "--seed") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 0, ~std::uint64_t{0}) : std::nullopt;
-      if (!v) return usage_error("--seed needs an integer >= 0");
-      seed = *v;
-    } else if (a == "--n") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 4, 1000) : std::nullopt;
-      if (!v) return usage_error("--n needs an integer in [4, 1000]");
-      n = static_cast<int>(*v);
-    } else if (a == "--step") {
-      const auto v = has_value ? ccd::parse_integer(args[++i], 0, 1000000) : std::nullopt;
-      if (!v) return usage_error("--step needs an integer in [0, 1000000]");
-      step = static_cast<int>(*v);
-    } else if (a == "--force") {
-      force = true;
-    } else if (a == "--ascii") {
-      encoding.format = ccd::cloth::PlyFormat::Ascii;
-    } else if (a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (name.empty()) {
-      name = a;
-    } else {
-      return usage_error("one generator or scene only");
-    }
+  CommandLine cli("mesh-frames", kDescription, "mesh-frames");
+  cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
+  cli.positional("NAME", name, "a generator (sheet_on_sphere, tori, crumpled) or a cloth scene");
+  cli.text("-o,--output", out_path, "DIR", "the folder of frame0.ply and frame1.ply", "-o needs a folder name");
+  cli.integer("--faces", 8, std::uint64_t{1} << 26, "N", "generators: about N faces (default 1000)",
+              [&faces](std::uint64_t v) { faces = v; });
+  cli.integer("--seed", 0, ~std::uint64_t{0}, "S", "generators: the random seed (default 1)",
+              [&seed](std::uint64_t v) { seed = v; });
+  cli.integer("--n", 4, 1000, "N", "cloth runs: particles per side of a built-in scene (default 32)",
+              [&n](std::uint64_t v) { n = static_cast<int>(v); });
+  cli.integer("--step", 0, 1000000, "K", "cloth runs: the frames are states K and K + 1 (default 0)",
+              [&step](std::uint64_t v) { step = static_cast<int>(v); });
+  cli.flag("--ascii", ascii, "write text PLY files");
+  cli.flag("--force", force,
+           "write more than 1e7 faces, or simulate more than 1e9 particle-steps\n"
+           "(particles x (K + 1)); without it such work is refused up front");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (name.empty() || out_path.empty())
+      cli.fail("need a generator (sheet_on_sphere, tori, crumpled) or a cloth scene, and -o DIR");
+  } catch (...) {
+    return command_failed("mesh-frames");
   }
-  if (name.empty() || out_path.empty())
-    return usage_error("need a generator (sheet_on_sphere, tori, crumpled) or a cloth scene, and -o DIR");
+  if (ascii) encoding.format = ccd::cloth::PlyFormat::Ascii;
   try {
     ccd::OutputDirectory output(out_path, "frame0.ply");
     if (is_generator(name))
@@ -117,24 +115,6 @@ int run_mesh_frames(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kMeshFramesCommand = {
-    "mesh-frames", "write a pair of mesh frames (PLY) for ccdlab ccd FRAME0 FRAME1",
-    "usage: ccdlab mesh-frames sheet_on_sphere|tori|crumpled -o DIR [--faces N] [--seed S] [--ascii] [--force]\n"
-    "       ccdlab mesh-frames drape|twist|pile|SCENE.json -o DIR [--n N] [--step K] [--ascii] [--force]\n"
-    "\n"
-    "Writes DIR/frame0.ply and DIR/frame1.ply (binary little-endian, double coordinates; --ascii\n"
-    "for text), one triangle mesh at t = 0 and t = 1, for `ccdlab ccd DIR/frame0.ply DIR/frame1.ply`\n"
-    "(docs/mesh-ccd.md). The folder appears whole or not at all; an existing one is replaced only\n"
-    "when it is empty or was written by this command.\n"
-    "sheet_on_sphere  a sheet falling into a sphere\n"
-    "tori             two linked tori, apart at t = 0, twisting and cutting through each other\n"
-    "crumpled         a bumpy sheet folding through itself (--seed S, default 1)\n"
-    "--faces N        about N faces (default 1000; 8 to 2^26)\n"
-    "drape, twist, pile, SCENE.json: a cloth run (docs/cloth.md) with N particles per side\n"
-    "(--n, default 32); the frames are its states K and K + 1 (--step K, default 0).\n"
-    "--force          write more than 1e7 faces, or simulate more than 1e9 particle-steps\n"
-    "                 (particles x (K + 1)); without it such work is refused up front\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).\n",
-    run_mesh_frames};
+    "mesh-frames", "write a pair of mesh frames (PLY) for ccdlab ccd FRAME0 FRAME1", run_mesh_frames};
 
 }  // namespace ccdlab

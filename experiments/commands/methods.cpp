@@ -1,5 +1,6 @@
 // `ccdlab methods [--names]`: the bounds, the broad phases, and how they compose.
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../method.hpp"
 
@@ -16,13 +17,20 @@ void print_options(std::span<const ccd::ParameterSpec> parameters) {
 }
 
 int run_methods(std::span<const std::string> args) {
-  if (!args.empty() && args[0] == "--names") {
+  CommandLine cli("methods",
+                  "Lists every bound (with what it may know and whether it is conservative), every\n"
+                  "broad phase and every scheduler, each with its options (default, unit, range).\n",
+                  "methods");
+  bool names = false;
+  cli.flag("--names", names, "print every composed fixed-step method name with default options, one per line");
+  try {
+    if (!cli.parse(args)) return 0;
+  } catch (...) {
+    return command_failed("methods");
+  }
+  if (names) {
     for (const std::string& m : all_method_names()) std::cout << m << "\n";
     return 0;
-  }
-  if (!args.empty()) {
-    std::cerr << "ccdlab methods: unexpected argument '" << args[0] << "' (see ccdlab methods --help)\n";
-    return kExitBadInput;
   }
   std::cout << "A method is BOUND/BROADPHASE[@SCHEDULER], e.g. aabb/sap, capsule/grid, horn:4/sap,\n"
                "horn:4/grid@earliest; each part may set its options as NAME:option=value,...\n"
@@ -58,12 +66,6 @@ int run_methods(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kMethodsCommand = {
-    "methods", "list the bounds and broad phases that compose methods BOUND/BROADPHASE",
-    "usage: ccdlab methods [--names]\n"
-    "\n"
-    "Lists every bound (with what it may know and whether it is conservative), every\n"
-    "broad phase and every scheduler, each with its options (default, unit, range).\n"
-    "--names prints every composed fixed-step method name with default options, one per line.\n",
-    run_methods};
+    "methods", "list the bounds and broad phases that compose methods BOUND/BROADPHASE", run_methods};
 
 }  // namespace ccdlab

@@ -1,6 +1,7 @@
 // `ccdlab pack SCENE -o SCENE.ccds [--json]`: writes a scene in the binary companion
 // format (ccd/scene/scene_binary.hpp, docs/formats.md), or back as JSON with --json.
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/input_error.hpp>
@@ -15,49 +16,36 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: ccdlab pack SCENE -o OUT.ccds [--json]\n"
-    "\n"
+constexpr const char* kDescription =
     "Writes the scene SCENE (JSON, or binary) in the binary scene format (docs/formats.md,\n"
     "\"ccdlab-scene-binary/1\"), which every command that reads a scene accepts in place of\n"
     "the JSON file and reads in a fraction of the time. It carries the scene's digest, so a\n"
     "truth file computed from either file fits both. Only sphere scenes (no shapes, spin or\n"
-    "static scenery) have a binary form; others are refused.\n"
-    "\n"
-    "  -o OUT     the output (written atomically; '-' = stdout)\n"
-    "  --json     write the scene as JSON instead (what `ccdlab scene` writes): unpacks a\n"
-    "             binary scene\n"
-    "\n"
+    "static scenery) have a binary form; others are refused.\n";
+
+constexpr const char* kFooter =
     "A binary SCENE is checked on the way: its stored digest must be the digest of the scene\n"
     "it holds (loading it elsewhere does not recompute the digest).\n"
     "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
-
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab pack: " << what << " (see ccdlab pack --help)\n";
-  return kExitBadInput;
-}
+    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).";
 
 int run_pack(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool json = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--output") {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      out_path = args[++i];
-    } else if (a == "--json") {
-      json = true;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_path.empty()) {
-      scene_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  CommandLine cli("pack", kDescription, "pack");
+  cli.footer(kFooter);
+  cli.positional("SCENE", scene_path, "the scene (JSON or binary)");
+  cli.text("-o,--output", out_path, "OUT", "the output (written atomically; '-' = stdout)", "missing value after -o");
+  cli.flag("--json", json,
+           "write the scene as JSON instead (what `ccdlab scene` writes): unpacks a\n"
+           "binary scene");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_path.empty()) cli.fail("missing SCENE");
+    if (out_path.empty()) cli.fail("missing -o OUT");
+  } catch (...) {
+    return command_failed("pack");
   }
-  if (scene_path.empty()) return usage_error("missing SCENE");
-  if (out_path.empty()) return usage_error("missing -o OUT");
   try {
     const std::string inputs[] = {scene_path};
     ccd::OutputFile output(out_path, inputs);
@@ -83,6 +71,6 @@ int run_pack(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kPackCommand = {"pack", "write a scene in the binary format that loads fast (or back as JSON)",
-                                     kUsage, run_pack};
+                                     run_pack};
 
 }  // namespace ccdlab

@@ -2,6 +2,7 @@
 // A, A + STEP, ..., up to B, from the scene's motion model (centres from the exact
 // trajectories, orientations from the prescribed or free spin), as CSV.
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../work_estimate.hpp"
 
@@ -23,9 +24,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: ccdlab poses SCENE.json --times A:B:STEP -o POSES.csv [--force]\n"
-    "\n"
+constexpr const char* kDescription =
     "Writes every body's pose at the times A, A + STEP, A + 2 STEP, ... up to B (each time\n"
     "computed as A + k STEP) from the scene's motion model: the centre from the exact\n"
     "trajectory (walls, gravity, acceleration changes) and the orientation from the\n"
@@ -33,20 +32,9 @@ constexpr const char* kUsage =
     "  body,t,x,y,z,qw,qx,qy,qz\n"
     "body is the index in the scene, (x, y, z) the centre in metres, q the unit quaternion\n"
     "(body to world, qw >= 0; the identity for bodies that do not turn); rows by time,\n"
-    "then body; numbers with 17 significant digits.\n"
-    "\n"
-    "  --times A:B:STEP  0 <= A <= B <= horizon, STEP > 0, at most 10000000 rows in all\n"
-    "                    unless --force (refused before the work with the estimate)\n"
-    "  -o POSES.csv      the output (written atomically; '-' = stdout)\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
+    "then body; numbers with 17 significant digits.\n";
 
 constexpr double kMaxRows = 1e7;
-
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab poses: " << what << " (see ccdlab poses --help)\n";
-  return kExitBadInput;
-}
 
 std::optional<double> parse_number(const std::string& s) {
   if (s.empty()) return std::nullopt;
@@ -56,45 +44,59 @@ std::optional<double> parse_number(const std::string& s) {
   return x;
 }
 
+// The times A:B:STEP of --times.
+struct Times {
+  double a = 0.0, b = 0.0, step = 0.0;
+};
+
+Times parse_times(const CommandLine& cli, const std::string& times) {
+  const std::size_t c1 = times.find(':'), c2 = c1 == std::string::npos ? c1 : times.find(':', c1 + 1);
+  if (c2 == std::string::npos || times.find(':', c2 + 1) != std::string::npos)
+    cli.fail("--times must be A:B:STEP, got '" + times + "'");
+  const auto A = parse_number(times.substr(0, c1)), B = parse_number(times.substr(c1 + 1, c2 - c1 - 1)),
+             step = parse_number(times.substr(c2 + 1));
+  if (!A || !B || !step) cli.fail("--times A:B:STEP needs three finite numbers, got '" + times + "'");
+  if (!(*step > 0.0)) cli.fail("--times: STEP must be > 0, got '" + times + "'");
+  if (!(*A >= 0.0 && *A <= *B)) cli.fail("--times: need 0 <= A <= B, got '" + times + "'");
+  return {*A, *B, *step};
+}
+
 int run_poses(std::span<const std::string> args) {
   std::string scene_path, out_path, times;
   bool force = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--output" || a == "--times") {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      (a == "--times" ? times : out_path) = args[++i];
-    } else if (a == "--force") {
-      force = true;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_path.empty()) {
-      scene_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  CommandLine cli("poses", kDescription, "poses");
+  cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).");
+  cli.positional("SCENE.json", scene_path, "the scene");
+  cli.text("--times", times, "A:B:STEP",
+           "0 <= A <= B <= horizon, STEP > 0, at most 10000000 rows in all\n"
+           "unless --force (refused before the work with the estimate)",
+           "missing value after --times");
+  cli.text("-o,--output", out_path, "POSES.csv", "the output (written atomically; '-' = stdout)",
+           "missing value after -o");
+  cli.flag("--force", force, "write more than 10000000 rows");
+  Times t;
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_path.empty()) cli.fail("missing SCENE.json");
+    if (times.empty()) cli.fail("missing --times A:B:STEP");
+    if (out_path.empty()) cli.fail("missing -o POSES.csv");
+    t = parse_times(cli, times);
+  } catch (...) {
+    return command_failed("poses");
   }
-  if (scene_path.empty()) return usage_error("missing SCENE.json");
-  if (times.empty()) return usage_error("missing --times A:B:STEP");
-  if (out_path.empty()) return usage_error("missing -o POSES.csv");
-  const std::size_t c1 = times.find(':'), c2 = c1 == std::string::npos ? c1 : times.find(':', c1 + 1);
-  if (c2 == std::string::npos || times.find(':', c2 + 1) != std::string::npos)
-    return usage_error("--times must be A:B:STEP, got '" + times + "'");
-  const auto A = parse_number(times.substr(0, c1)), B = parse_number(times.substr(c1 + 1, c2 - c1 - 1)),
-             step = parse_number(times.substr(c2 + 1));
-  if (!A || !B || !step) return usage_error("--times A:B:STEP needs three finite numbers, got '" + times + "'");
-  if (!(*step > 0.0)) return usage_error("--times: STEP must be > 0, got '" + times + "'");
-  if (!(*A >= 0.0 && *A <= *B)) return usage_error("--times: need 0 <= A <= B, got '" + times + "'");
+  const double* A = &t.a;
+  const double* B = &t.b;
+  const double* step = &t.step;
   try {
     const std::string inputs[] = {scene_path};
     ccd::OutputFile output(out_path, inputs);
     const ccd::Scene scene = ccd::load_scene(scene_path);
     if (*B > scene.horizon)
-      return usage_error("--times: B must be at most the scene's horizon " + std::to_string(scene.horizon) + ", got '" +
-                         times + "'");
+      cli.fail("--times: B must be at most the scene's horizon " + std::to_string(scene.horizon) + ", got '" + times +
+               "'");
     const double count = std::floor((*B - *A) / *step) + 1.0;
     if (!(count <= 0x1p53))  // k STEP exact, k a long long, even with --force
-      return usage_error("--times gives " + work_number(count) + " times, more than 2^53");
+      cli.fail("--times gives " + work_number(count) + " times, more than 2^53");
     check_work({count * static_cast<double>(scene.bodies.size()), kMaxRows, "rows",
                 work_number(count) + " times x " + std::to_string(scene.bodies.size()) + " bodies"},
                force, scene_path, "--times");
@@ -123,7 +125,7 @@ int run_poses(std::span<const std::string> args) {
 
 }  // namespace
 
-extern const Command kPosesCommand = {"poses", "every body's position and orientation at given times, as CSV", kUsage,
+extern const Command kPosesCommand = {"poses", "every body's position and orientation at given times, as CSV",
                                       run_poses};
 
 }  // namespace ccdlab

@@ -3,6 +3,7 @@
 // output folder is checked before the work; then scripts/report.py draws the charts and
 // writes the report (see python_script.hpp).
 #include "command.hpp"
+#include "command_line.hpp"
 #include "python_script.hpp"
 
 #include "../results_file.hpp"
@@ -60,11 +61,6 @@ std::string one_line(const std::string& text) {
   return out;
 }
 
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab report: " << one_line(what) << " (see ccdlab report --help)\n";
-  return kExitBadInput;
-}
-
 // Every results file read and validated as `ccdlab merge` reads shards; each file once.
 void check_inputs(const std::vector<std::string>& paths) {
   std::vector<nlohmann::json> seen;
@@ -105,42 +101,54 @@ void check_output_folder(const std::string& dir, const std::vector<std::string>&
                           "cannot be created: the folder " + parent.string() + " does not take new files");
 }
 
+constexpr const char* kDescription =
+    "Writes DIR/report.md and DIR/report.html (charts embedded; opens in a browser without a\n"
+    "server), and the charts DIR/missed.png and DIR/cost.png: per method the zero-miss frontier\n"
+    "(the largest dt at and below which it missed nothing), the missed fraction per dt and the\n"
+    "cost; several results files (other scenes, other machines, another dt range) are overlaid\n"
+    "on one chart and one table. When no method missed anything the report says so first.\n"
+    "Runs scripts/report.py with /usr/bin/python3 (matplotlib).\n";
+
+constexpr const char* kFooter =
+    "The results files are checked as ccdlab merge checks them (each file once), and DIR before\n"
+    "the work; the four outputs are written to temporary files and renamed into place together,\n"
+    "so a failure (a full disk) leaves every old output as it was and no temporary file.\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input (one line naming the file and the field).";
+
 int run_report(std::span<const std::string> args) {
   std::vector<std::string> results;
   std::string out, title;
-  bool title_given = false, options_done = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (!options_done && (a == "-o" || a == "--output" || a == "--title")) {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      if (a == "--title") {
-        if (title_given) return usage_error("--title given twice");
-        title = args[++i];
-        title_given = true;
-        continue;
-      }
-      if (!out.empty()) return usage_error(a + " given twice");
-      out = args[++i];
-      if (out.empty()) return usage_error(a + " needs a folder name");
-    } else if (!options_done && a == "--") {
-      options_done = true;
-    } else if (!options_done && a.size() > 1 && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else {
-      results.push_back(a);
-    }
-  }
-  if (results.empty()) return usage_error("missing RESULTS.json");
-  if (out.empty()) return usage_error("missing -o DIR");
+  CommandLine cli("report", kDescription, "report");
+  cli.footer(kFooter);
+  cli.positionals("RESULTS.json", results, "results files (after --, names that begin with -)");
+  cli.value(
+      "-o,--output", "DIR", "the report's folder (created when missing)",
+      [&](const std::string& v) {
+        if (!out.empty()) cli.fail("-o given twice");
+        if (v.empty()) cli.fail("-o needs a folder name");
+        out = v;
+      },
+      "missing value after -o");
+  CLI::Option* title_option =
+      cli.text("--title", title, "TEXT", "the report's title (default: from the results)",
+               "missing value after --title", /*once=*/true);
   try {
+    if (!cli.parse(args)) return 0;
+    if (results.empty()) cli.fail("missing RESULTS.json");
+    if (out.empty()) cli.fail("missing -o DIR");
     check_inputs(results);
     check_output_folder(out, results);
-  } catch (const ccd::InputError& e) {
+  } catch (const ccd::InputError& e) {  // a file name or a quoted value on one line
+    std::cerr << "ccdlab report: " << one_line(e.what()) << "\n";
+    return kExitBadInput;
+  } catch (const UsageError& e) {
     std::cerr << "ccdlab report: " << one_line(e.what()) << "\n";
     return kExitBadInput;
   } catch (...) {
     return command_failed("report");
   }
+  const bool title_given = title_option->count() > 0;
   // The script gets the arguments in a form no file name can be mistaken in: options
   // joined to their values, the files after "--".
   std::vector<std::string> script_args;
@@ -155,21 +163,6 @@ int run_report(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kReportCommand = {
-    "report", "write report.md and a self-contained report.html of one or more results files",
-    "usage: ccdlab report RESULTS.json... -o DIR [--title TEXT]\n"
-    "\n"
-    "Writes DIR/report.md and DIR/report.html (charts embedded; opens in a browser without a\n"
-    "server), and the charts DIR/missed.png and DIR/cost.png: per method the zero-miss frontier\n"
-    "(the largest dt at and below which it missed nothing), the missed fraction per dt and the\n"
-    "cost; several results files (other scenes, other machines, another dt range) are overlaid\n"
-    "on one chart and one table. When no method missed anything the report says so first.\n"
-    "Runs scripts/report.py with /usr/bin/python3 (matplotlib).\n"
-    "\n"
-    "The results files are checked as ccdlab merge checks them (each file once), and DIR before\n"
-    "the work; the four outputs are written to temporary files and renamed into place together,\n"
-    "so a failure (a full disk) leaves every old output as it was and no temporary file.\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input (one line naming the file and the field).\n",
-    run_report};
+    "report", "write report.md and a self-contained report.html of one or more results files", run_report};
 
 }  // namespace ccdlab

@@ -1,6 +1,7 @@
 // `ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]
 //  [--force] [--list-missed]`
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "cloth_experiment_work.hpp"
 #include "../run_cloth_experiment.hpp"
@@ -54,13 +55,6 @@ void install_cancel_handlers() {
   std::signal(SIGTERM, on_signal);
 }
 
-// A flag's integer in [1, 4096] (ccd/util/integer_text.hpp).
-bool parse_int(const std::string& s, int& out) {
-  const auto v = ccd::parse_integer(s, 1, 4096);
-  if (v) out = static_cast<int>(*v);
-  return v.has_value();
-}
-
 // The results and their summary side-file, written as one (neither is left without the other).
 void commit_with_summary(ccd::OutputFile& output, std::optional<ccd::OutputFile>& summary,
                          const nlohmann::json& results) {
@@ -104,58 +98,102 @@ int run_cloth(const std::string& experiment_path, std::string out_path, int thre
   return 0;
 }
 
-int run_run(std::span<const std::string> args) {
-  auto usage_error = [](const std::string& msg) {
-    std::cerr << "ccdlab run: " << msg << " (see ccdlab run --help)\n";
-    return kExitBadInput;
-  };
-  std::string experiment_path, out_path, truth_path, summary_file, truth_cache;
+constexpr const char* kRunDescription =
+    "Runs every method of the experiment at every timestep against the scene's exact\n"
+    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
+    "summary (per method: the largest dt with no miss, the cost at the cheapest zero-miss\n"
+    "point, the missed fraction at every dt) and writes it as Markdown beside the results\n"
+    "(RESULTS.summary.md).\n"
+    "\n"
+    "A cloth experiment runs every culler in the discrete and continuous modes at every\n"
+    "check interval k against the exact mesh truth (docs/experiments.md#cloth-experiments).\n";
+
+constexpr const char* kRunFooter =
+    "Ctrl-C or SIGTERM stops the run within a second, writing nothing.\n"
+    "\n"
+    "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.";
+
+// `ccdlab run`'s arguments.
+struct RunArguments {
+  std::string experiment_path, out_path, truth_path, truth_cache;
   bool force = false, list_missed = false;
+};
+
+void declare_run_options(CommandLine& cli, RunArguments& a, RunOptions& options) {
+  cli.positional("EXPERIMENT.json", a.experiment_path, "the experiment (ccdlab-experiment/1 or ccdlab-cloth-experiment/1)");
+  cli.text("-o,--output", a.out_path, "FILE",
+           "results file (default results/NAME.json; '-' = standard output);\n"
+           "checked before the run (a regular file, not an input, in a folder\n"
+           "that takes a file), written atomically, never partially (Ctrl-C\n"
+           "leaves no file); RESULTS.summary.md is checked with it and written\n"
+           "with it (neither is left without the other)",
+           "-o needs a file name");
+  cli.integer("--threads", 1, 4096, "N",
+              "worker threads over (method, dt) jobs and for the ground truth\n"
+              "(default: all cores); counts do not depend on N",
+              [&options](std::uint64_t n) { options.threads = static_cast<int>(n); });
+  cli.value(
+      "--shard", "K/N",
+      "run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
+      "systems; join the shard files with `ccdlab merge`",
+      [&cli, &options](const std::string& v) {
+        const auto slash = v.find('/');
+        const auto k = slash == std::string::npos ? std::nullopt : ccd::parse_integer(v.substr(0, slash), 1, 4096);
+        const auto n = slash == std::string::npos ? std::nullopt : ccd::parse_integer(v.substr(slash + 1), 1, 4096);
+        if (!k || !n || *k > *n) cli.fail("--shard needs K/N with 1 <= K <= N");
+        options.shard.index = static_cast<int>(*k);
+        options.shard.count = static_cast<int>(*n);
+      },
+      "--shard needs K/N with 1 <= K <= N");
+  cli.text("--truth", a.truth_path, "FILE",
+           "reuse the ground truth in FILE (`ccdlab truth SCENE.json -o FILE`)\n"
+           "instead of computing it; FILE's scene digest must be this scene's\n"
+           "(else exit 2); a ccdlab-truth/1 file is checked only for its\n"
+           "horizon and body indices",
+           "--truth needs a truth file (ccdlab truth SCENE.json -o FILE)");
+  cli.flag("-q,--quiet", options.quiet, "no progress on stderr");
+  cli.flag("--force", a.force,
+           "run even when the work estimate (bodies x steps, summed over the\n"
+           "jobs) is above 1e11 body-steps or, with shaped bodies, the certified\n"
+           "pair tests (candidate pairs x evaluations x hull points, of the truth and\n"
+           "of the narrow phase) are above 1e9; a cloth experiment: above 1e9\n"
+           "particle-steps of simulation, 4e9 bytes of states kept or 1e10\n"
+           "particle-steps of checks over its jobs (docs/formats.md)");
+  cli.flag("--list-missed", a.list_missed,
+           "every record lists the contact events it missed (missed_events:\n"
+           "a, b, enter, exit), as the experiment option \"list_missed\": true");
+  cli.value(
+      "--truth-cache", "DIR",
+      "cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
+      "mesh truth is kept, one file per motion digest, read back when\n"
+      "present (default: cloth-truth/ beside the results file)",
+      [&cli, &a](const std::string& v) {
+        if (v.empty()) cli.fail("--truth-cache needs a folder");
+        a.truth_cache = v;
+      },
+      "--truth-cache needs a folder");
+}
+
+int run_run(std::span<const std::string> args) {
+  CommandLine cli("run", kRunDescription, "run");
+  cli.footer(kRunFooter);
+  RunArguments a;
   RunOptions options;
   options.threads = static_cast<int>(ccd::resolve_threads(0));
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* flag) -> const std::string* {
-      if (i + 1 >= args.size()) return nullptr;
-      (void)flag;
-      return &args[++i];
-    };
-    if (a == "-o" || a == "--output") {
-      const std::string* v = value("-o");
-      if (!v) return usage_error("-o needs a file name");
-      out_path = *v;
-    } else if (a == "--threads") {
-      const std::string* v = value("--threads");
-      if (!v || !parse_int(*v, options.threads)) return usage_error("--threads needs an integer in [1, 4096]");
-    } else if (a == "--shard") {
-      const std::string* v = value("--shard");
-      const auto slash = v ? v->find('/') : std::string::npos;
-      if (!v || slash == std::string::npos || !parse_int(v->substr(0, slash), options.shard.index) ||
-          !parse_int(v->substr(slash + 1), options.shard.count) || options.shard.index > options.shard.count)
-        return usage_error("--shard needs K/N with 1 <= K <= N");
-    } else if (a == "--truth") {
-      const std::string* v = value("--truth");
-      if (!v) return usage_error("--truth needs a truth file (ccdlab truth SCENE.json -o FILE)");
-      truth_path = *v;
-    } else if (a == "--truth-cache") {
-      const std::string* v = value("--truth-cache");
-      if (!v || v->empty()) return usage_error("--truth-cache needs a folder");
-      truth_cache = *v;
-    } else if (a == "--quiet" || a == "-q") {
-      options.quiet = true;
-    } else if (a == "--force") {
-      force = true;
-    } else if (a == "--list-missed") {
-      list_missed = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (experiment_path.empty()) {
-      experiment_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  declare_run_options(cli, a, options);
+  std::string& experiment_path = a.experiment_path;
+  std::string& out_path = a.out_path;
+  std::string& truth_path = a.truth_path;
+  std::string& truth_cache = a.truth_cache;
+  const bool& force = a.force;
+  const bool& list_missed = a.list_missed;
+  std::string summary_file;
+  try {
+    if (!cli.parse(args)) return 0;
+    if (experiment_path.empty()) cli.fail("missing EXPERIMENT.json");
+  } catch (...) {
+    return command_failed("run");
   }
-  if (experiment_path.empty()) return usage_error("missing EXPERIMENT.json");
 
   try {
     // A pipe is read once, by the sphere runner; a cloth experiment is a regular file.
@@ -163,10 +201,10 @@ int run_run(std::span<const std::string> args) {
     if (std::filesystem::is_regular_file(experiment_path, ec) &&
         is_cloth_experiment(ccd::read_json_file(experiment_path))) {
       if (options.shard.count > 1 || !truth_path.empty() || list_missed)
-        return usage_error("--shard, --truth and --list-missed apply to sphere and rigid experiments only");
+        cli.fail("--shard, --truth and --list-missed apply to sphere and rigid experiments only");
       return run_cloth(experiment_path, out_path, options.threads, options.quiet, truth_cache, force);
     }
-    if (!truth_cache.empty()) return usage_error("--truth-cache applies to cloth experiments only");
+    if (!truth_cache.empty()) cli.fail("--truth-cache applies to cloth experiments only");
   } catch (...) {
     return command_failed("run", "running " + experiment_path);
   }
@@ -282,48 +320,6 @@ int run_run(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kRunCommand = {
-    "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)",
-    "usage: ccdlab run EXPERIMENT.json [-o RESULTS.json] [--threads N] [--shard K/N] [--truth FILE] [--quiet]\n"
-    "                  [--force] [--list-missed] [--truth-cache DIR]\n"
-    "\n"
-    "Runs every method of the experiment at every timestep against the scene's exact\n"
-    "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
-    "summary (per method: the largest dt with no miss, the cost at the cheapest zero-miss\n"
-    "point, the missed fraction at every dt) and writes it as Markdown beside the results\n"
-    "(RESULTS.summary.md).\n"
-    "\n"
-    "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
-    "                     checked before the run (a regular file, not an input, in a folder\n"
-    "                     that takes a file), written atomically, never partially (Ctrl-C\n"
-    "                     leaves no file); RESULTS.summary.md is checked with it and written\n"
-    "                     with it (neither is left without the other)\n"
-    "  --threads N        worker threads over (method, dt) jobs and for the ground truth\n"
-    "                     (default: all cores); counts do not depend on N\n"
-    "  --shard K/N        run only jobs j with j mod N == K-1 (1 <= K <= N), for batch\n"
-    "                     systems; join the shard files with `ccdlab merge`\n"
-    "  --truth FILE       reuse the ground truth in FILE (`ccdlab truth SCENE.json -o FILE`)\n"
-    "                     instead of computing it; FILE's scene digest must be this scene's\n"
-    "                     (else exit 2); a ccdlab-truth/1 file is checked only for its\n"
-    "                     horizon and body indices\n"
-    "  -q, --quiet        no progress on stderr\n"
-    "  --force            run even when the work estimate (bodies x steps, summed over the\n"
-    "                     jobs) is above 1e11 body-steps or, with shaped bodies, the certified\n"
-    "                     pair tests (candidate pairs x evaluations x hull points, of the truth and\n"
-    "                     of the narrow phase) are above 1e9; a cloth experiment: above 1e9\n"
-    "                     particle-steps of simulation, 4e9 bytes of states kept or 1e10\n"
-    "                     particle-steps of checks over its jobs (docs/formats.md)\n"
-    "  --list-missed      every record lists the contact events it missed (missed_events:\n"
-    "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
-    "  --truth-cache DIR  cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
-    "                     mesh truth is kept, one file per motion digest, read back when\n"
-    "                     present (default: cloth-truth/ beside the results file)\n"
-    "\n"
-    "A cloth experiment runs every culler in the discrete and continuous modes at every\n"
-    "check interval k against the exact mesh truth (docs/experiments.md#cloth-experiments).\n"
-    "\n"
-    "Ctrl-C or SIGTERM stops the run within a second, writing nothing.\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input (nothing written), 130 interrupted.\n",
-    run_run};
+    "run", "run an experiment: sweep dt, run every method, compare with ground truth (JSON results)", run_run};
 
 }  // namespace ccdlab

@@ -1,6 +1,7 @@
 // `ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet]`:
 // exact contact intervals of every pair (ground truth, format ccdlab-truth/2).
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../progress.hpp"
 #include "../work_estimate.hpp"
@@ -25,28 +26,15 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: ccdlab truth SCENE.json [-o OUT.json] [--threads N] [--windows N] [--quiet] [--force]\n"
-    "\n"
+constexpr const char* kDescription =
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md), and,\n"
     "for a scene with scenery, every interval during which a body touches a static polygon\n"
-    "(static_events, docs/scenery.md).\n"
-    "\n"
-    "  -o OUT.json   write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"
-    "                before the work: a regular file, not the scene, in a folder that takes a file\n"
-    "  --threads N   worker threads, at most 4096 (default: one per core); the result does not\n"
-    "                depend on it\n"
-    "  --windows N   time windows of the space-time broad phase, at most 1000000 (default:\n"
-    "                automatic)\n"
-    "  --quiet       print no summary and no progress\n"
-    "  --force       compute a scene with shapes whose estimated work (certified pair tests:\n"
-    "                candidate pairs x bracket evaluations x hull points, docs/formats.md) is\n"
-    "                above 1e9; without it such a scene is refused before the work with the\n"
-    "                estimate\n"
-    "\n"
+    "(static_events, docs/scenery.md).\n";
+
+constexpr const char* kFooter =
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
-    "2 bad input or usage (no file written).\n";
+    "2 bad input or usage (no file written).";
 
 // More windows than this cost more in box work and memory than they can save.
 constexpr unsigned long kMaxWindows = 1000000;
@@ -61,44 +49,48 @@ double check_truth_work(const ccd::Scene& scene, const ccd::Trajectories& traj, 
   return work;
 }
 
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab truth: " << what << " (see ccdlab truth --help)\n";
-  return kExitBadInput;
-}
-
 int run_truth(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool quiet = false, force = false;
   ccd::TruthOptions options;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--output" || a == "--threads" || a == "--windows") {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      const std::string& v = args[++i];
-      if (a == "-o" || a == "--output") {
-        out_path = v;
-      } else {
-        const auto n = ccd::parse_integer(v, 1, 999999999);
-        if (!n) return usage_error(a + " needs a positive integer, got '" + v + "'");
-        if (a == "--threads" && *n > 4096) return usage_error("--threads must be at most 4096, got " + v);
-        if (a == "--windows" && *n > kMaxWindows)
-          return usage_error("--windows must be at most " + std::to_string(kMaxWindows) + ", got " + v);
-        if (a == "--threads") options.threads = static_cast<unsigned>(*n);
-        else options.windows = *n;
-      }
-    } else if (a == "--quiet" || a == "-q") {
-      quiet = true;
-    } else if (a == "--force") {
-      force = true;
-    } else if (!a.empty() && a[0] == '-' && a != "-") {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_path.empty()) {
-      scene_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  CommandLine cli("truth", kDescription, "truth");
+  cli.footer(kFooter);
+  cli.positional("SCENE.json", scene_path, "the scene (ccdlab-scene/1 or /2, or binary)");
+  cli.text("-o,--output", out_path, "OUT.json",
+           "write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"
+           "before the work: a regular file, not the scene, in a folder that takes a file",
+           "missing value after -o");
+  // The integers' messages name the limit when a value is a positive integer above it.
+  auto positive = [&cli](const std::string& name, const std::string& v, unsigned long most) {
+    const auto n = ccd::parse_integer(v, 1, 999999999);
+    if (!n) cli.fail(name + " needs a positive integer, got '" + v + "'");
+    if (*n > most) cli.fail(name + " must be at most " + std::to_string(most) + ", got " + v);
+    return *n;
+  };
+  cli.value(
+      "--threads", "N",
+      "worker threads, at most 4096 (default: one per core); the result does not\n"
+      "depend on it",
+      [&](const std::string& v) { options.threads = static_cast<unsigned>(positive("--threads", v, 4096)); },
+      "missing value after --threads");
+  cli.value(
+      "--windows", "N",
+      "time windows of the space-time broad phase, at most 1000000 (default:\n"
+      "automatic)",
+      [&](const std::string& v) { options.windows = positive("--windows", v, kMaxWindows); },
+      "missing value after --windows");
+  cli.flag("-q,--quiet", quiet, "print no summary and no progress");
+  cli.flag("--force", force,
+           "compute a scene with shapes whose estimated work (certified pair tests:\n"
+           "candidate pairs x bracket evaluations x hull points, docs/formats.md) is\n"
+           "above 1e9; without it such a scene is refused before the work with the\n"
+           "estimate");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_path.empty()) cli.fail("missing SCENE.json");
+  } catch (...) {
+    return command_failed("truth");
   }
-  if (scene_path.empty()) return usage_error("missing SCENE.json");
   std::string doing = "reading " + scene_path;
   try {
     std::optional<ccd::OutputFile> output;
@@ -179,6 +171,6 @@ int run_truth(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kTruthCommand = {"truth", "exact contact intervals of every pair of a scene (ground truth)",
-                                      kUsage, run_truth};
+                                      run_truth};
 
 }  // namespace ccdlab

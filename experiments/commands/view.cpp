@@ -2,6 +2,7 @@
 // self-contained HTML page that plays the scene in a browser, with the bounds, the truth's
 // contacts and every contact a method missed (docs/viewer.md).
 #include "command.hpp"
+#include "command_line.hpp"
 
 #include "../view_data.hpp"
 #include "../view_page.hpp"
@@ -29,57 +30,52 @@ namespace {
 // page holds all of it and its parsed form several times over.
 constexpr double kMaxViewInputBytes = 1e8;
 
-constexpr const char* kUsage =
-    "usage: ccdlab view SCENE.json [--results RESULTS.json] [--truth TRUTH.json] -o VIEW.html [--force]\n"
-    "\n"
+constexpr const char* kDescription =
     "Writes one self-contained HTML page (three.js inlined; open it from disk, no server and no\n"
     "network needed) that plays the scene: play, pause, scrub time; spheres and rigid shapes;\n"
     "for a method and dt of the results, its sample instants, its bounds, the truth's contacts\n"
     "and a table of every contact it missed (click a row to jump there). The URL fragment\n"
-    "selects the view: VIEW.html#method=aabb/sap&dt=0.05&t=0.5 (docs/viewer.md).\n"
-    "\n"
-    "  SCENE.json            a ccdlab-scene/1 or /2 file, or the frames of a cloth run\n"
-    "                        (ccdlab-cloth-frames/1, from ccdlab cloth ... -o FRAMES.json)\n"
-    "  --results RESULTS.json  a results file of this scene (ccdlab run --list-missed lists the\n"
-    "                        missed contacts the page shows)\n"
-    "  --truth TRUTH.json    the scene's ground truth (ccdlab truth -o): its contacts are drawn\n"
-    "  -o VIEW.html          the page (written atomically; checked before the work)\n"
-    "  --force               build a page of more than 5e6 entries (trajectory pieces and\n"
-    "                        sampled poses of free spins, or a cloth run's particle positions\n"
-    "                        over its frames, about 150 bytes each) or read an input of more\n"
-    "                        than 1e8 bytes; without it such work is refused before it starts\n"
-    "                        with the estimate\n"
-    "\n"
-    "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).\n";
-
-int usage_error(const std::string& what) {
-  std::cerr << "ccdlab view: " << what << " (see ccdlab view --help)\n";
-  return kExitBadInput;
-}
+    "selects the view: VIEW.html#method=aabb/sap&dt=0.05&t=0.5 (docs/viewer.md).\n";
 
 int run_view(std::span<const std::string> args) {
   std::string scene_path, results_path, truth_path, out_path;
   bool force = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "-o" || a == "--output" || a == "--results" || a == "--truth") {
-      if (i + 1 >= args.size()) return usage_error("missing value after " + a);
-      std::string& slot = a == "--results" ? results_path : a == "--truth" ? truth_path : out_path;
-      if (!slot.empty()) return usage_error(a + " given twice");
-      slot = args[++i];
-      if (slot.empty()) return usage_error(a + " needs a file name");
-    } else if (a == "--force") {
-      force = true;
-    } else if (!a.empty() && a[0] == '-') {
-      return usage_error("unknown option '" + a + "'");
-    } else if (scene_path.empty()) {
-      scene_path = a;
-    } else {
-      return usage_error("unexpected argument '" + a + "'");
-    }
+  CommandLine cli("view", kDescription, "view");
+  cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).");
+  cli.positional("SCENE.json", scene_path,
+                 "a ccdlab-scene/1 or /2 file, or the frames of a cloth run\n"
+                 "(ccdlab-cloth-frames/1, from ccdlab cloth ... -o FRAMES.json)");
+  // Each file option once, never empty.
+  auto file = [&cli](const std::string& names, std::string& slot, const std::string& value_name,
+                     const std::string& help) {
+    const std::string name = option_name(names);
+    cli.value(
+        names, value_name, help,
+        [&cli, &slot, name](const std::string& v) {
+          if (!slot.empty()) cli.fail(name + " given twice");
+          if (v.empty()) cli.fail(name + " needs a file name");
+          slot = v;
+        },
+        "missing value after " + name);
+  };
+  file("--results", results_path, "RESULTS.json",
+       "a results file of this scene (ccdlab run --list-missed lists the\n"
+       "missed contacts the page shows)");
+  file("--truth", truth_path, "TRUTH.json", "the scene's ground truth (ccdlab truth -o): its contacts are drawn");
+  file("-o,--output", out_path, "VIEW.html", "the page (written atomically; checked before the work)");
+  cli.flag("--force", force,
+           "build a page of more than 5e6 entries (trajectory pieces and\n"
+           "sampled poses of free spins, or a cloth run's particle positions\n"
+           "over its frames, about 150 bytes each) or read an input of more\n"
+           "than 1e8 bytes; without it such work is refused before it starts\n"
+           "with the estimate");
+  try {
+    if (!cli.parse(args)) return 0;
+    if (scene_path.empty()) cli.fail("missing SCENE.json");
+    if (out_path.empty()) cli.fail("missing -o VIEW.html");
+  } catch (...) {
+    return command_failed("view");
   }
-  if (scene_path.empty()) return usage_error("missing SCENE.json");
-  if (out_path.empty()) return usage_error("missing -o VIEW.html");
   try {
     std::vector<std::string> inputs{scene_path};
     if (!results_path.empty()) inputs.push_back(results_path);
@@ -96,7 +92,7 @@ int run_view(std::span<const std::string> args) {
     nlohmann::json data;
     if (format && *format == "ccdlab-cloth-frames/1") {
       if (!results_path.empty() || !truth_path.empty())
-        return usage_error("--results and --truth are for body scenes, not for cloth frames");
+        cli.fail("--results and --truth are for body scenes, not for cloth frames");
       data = cloth_view_data(scene_json, scene_path, force);
     } else if (format && *format == "ccdlab-cloth/1") {
       throw ccd::InputError(scene_path, "format",
@@ -133,7 +129,7 @@ int run_view(std::span<const std::string> args) {
 }  // namespace
 
 extern const Command kViewCommand = {
-    "view", "an interactive HTML page of a scene: its motion, a method's bounds and every contact it missed", kUsage,
+    "view", "an interactive HTML page of a scene: its motion, a method's bounds and every contact it missed",
     run_view};
 
 }  // namespace ccdlab
