@@ -165,9 +165,9 @@ Experiment experiment_from_json(const json& j, const std::string& file) {
     if (first != identities.end())
       r.fail(field, "method '" + m.name + "' is the same method as methods[" +
                         std::to_string(first - identities.begin()) + "] ('" +
-                        e.methods[static_cast<std::size_t>(first - identities.begin())] + "')");
+                        e.methods[static_cast<std::size_t>(first - identities.begin())].name + "')");
     identities.push_back(std::move(resolved));
-    e.methods.push_back(m.name);
+    e.methods.push_back(std::move(m));
   }
   if (j.contains("acceleration_bound") && !j["acceleration_bound"].is_null()) {
     e.acceleration_bound = r.number(j["acceleration_bound"], "acceleration_bound");
@@ -233,7 +233,7 @@ json experiment_to_json(const Experiment& e) {
     if (e.hz_given[i]) hz.push_back(e.hz[i]);
   if (hz.empty()) j.erase("hz"); else j["hz"] = hz;
   j["list_missed"] = e.list_missed;
-  j["methods"] = e.methods;
+  j["methods"] = method_names(e.methods);
   j["acceleration_bound"] = e.acceleration_bound < 0 ? json(nullptr) : json(e.acceleration_bound);
   j["repeats"] = e.repeats;
   return j;

@@ -2,6 +2,8 @@
 // An experiment: one scene, a list of timesteps, a list of methods (`ccdlab-experiment/1`,
 // documented in docs/experiments.md). Parsing fills in every default, so the results
 // file records exactly what ran.
+#include "method.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -18,7 +20,7 @@ struct Experiment {
   std::vector<double> dt;             ///< sorted descending, unique, each in (0, horizon]
   std::vector<double> hz;             ///< parallel to dt: the frequency as given in "hz", else 1 / dt
   std::vector<bool> hz_given;         ///< parallel to dt: the timestep came from "hz"
-  std::vector<std::string> methods;   ///< BOUND/BROADPHASE, validated against the registries
+  std::vector<MethodSpec> methods;    ///< BOUND/BROADPHASE[@SCHEDULER], parsed once (method.hpp)
   double acceleration_bound = -1.0;   ///< A for Bounded bounds; < 0: the scene's largest
   int repeats = 1;                    ///< timing repeats (counts must not change)
   bool list_missed = false;           ///< records list their missed events (missed_events)

@@ -19,15 +19,24 @@ MethodSpec parse_method(std::string_view full_name) {
   }
   MethodSpec m;
   m.name = std::string(full_name);
-  m.bound = ccd::parse_bound(name.substr(0, slash));
-  m.broad_phase = ccd::parse_broad_phase(name.substr(slash + 1));
+  m.bound_text = std::string(name.substr(0, slash));
+  m.broad_phase_text = std::string(name.substr(slash + 1));
   m.scheduler_named = at != std::string_view::npos;
-  m.scheduler = m.scheduler_named ? ccd::parse_scheduler(full_name.substr(at + 1)) : ccd::default_scheduler();
+  if (m.scheduler_named) m.scheduler_text = std::string(full_name.substr(at + 1));
+  m.bound = ccd::parse_bound(m.bound_text);
+  m.broad_phase = ccd::parse_broad_phase(m.broad_phase_text);
+  m.scheduler = m.scheduler_named ? ccd::parse_scheduler(m.scheduler_text) : ccd::default_scheduler();
   if (m.scheduled() && !m.continuous())
     throw std::invalid_argument("method '" + std::string(full_name) + "': bound '" +
                                 std::string(m.bound.info->name) +
                                 "' is an instant bound; the earliest scheduler needs a space-time bound");
   return m;
+}
+
+std::vector<std::string> method_names(const std::vector<MethodSpec>& methods) {
+  std::vector<std::string> out;
+  for (const MethodSpec& m : methods) out.push_back(m.name);
+  return out;
 }
 
 nlohmann::json options_json(const MethodSpec& method) {

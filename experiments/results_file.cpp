@@ -51,7 +51,7 @@ Experiment stored_experiment(const json& j, const Reader& r) {
     const std::string what = std::string(err.what()).substr(prefix.size());
     r.fail(err.field().empty() ? "experiment" : "experiment." + err.field(), what);
   }
-  if (j["methods"] != json(e.methods)) r.fail("experiment.methods", "not as ccdlab run writes it");
+  if (j["methods"] != json(method_names(e.methods))) r.fail("experiment.methods", "not as ccdlab run writes it");
   if (j["dt"] != json(e.dt)) r.fail("experiment.dt", "not as ccdlab run writes it (a sorted list)");
   const double a = r.number(r.require(j, "acceleration_bound_used", "experiment"), "experiment.acceleration_bound_used");
   if (a < 0.0) r.fail("experiment.acceleration_bound_used", "must be >= 0");
@@ -149,8 +149,8 @@ void validate_results(const json& j, const std::string& file) {
                              std::to_string(count));
     if (seen[job]) r.fail(p + ".job", "job " + std::to_string(job) + " appears twice");
     seen[job] = true;
-    if (rec["method"] != e.methods[job / e.dt.size()])
-      r.fail(p + ".method", "must be '" + e.methods[job / e.dt.size()] + "', the method of job " + std::to_string(job));
+    if (rec["method"] != e.methods[job / e.dt.size()].name)
+      r.fail(p + ".method", "must be '" + e.methods[job / e.dt.size()].name + "', the method of job " + std::to_string(job));
     if (rec["dt"].get<double>() != e.dt[job % e.dt.size()])
       r.fail(p + ".dt", "must be " + json(e.dt[job % e.dt.size()]).dump() + ", the dt of job " + std::to_string(job));
     if (rec["events"].get<std::uint64_t>() != events)

@@ -50,10 +50,10 @@ ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
   // sphere paths only: in a wrapped scene it refuses shaped bodies.
   if (scene.wraps() && scene.has_non_spheres())
     for (std::size_t i = 0; i < e.methods.size(); ++i)
-      if (parse_method(e.methods[i]).scheduled())
+      if (e.methods[i].scheduled())
         throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
                               "@earliest takes plain spheres only in a scene that wraps around (box.boundary "
-                              "\"wrap\"); use the fixed-step method " + e.methods[i].substr(0, e.methods[i].find('@')));
+                              "\"wrap\"); use the fixed-step method " + e.methods[i].fixed_step_name());
   return scene;
 }
 
@@ -136,7 +136,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   for (std::size_t m = 0; m < e.methods.size(); ++m)
     for (std::size_t d = 0; d < e.dt.size(); ++d) {
       const std::size_t index = m * e.dt.size() + d;
-      if (options.shard.owns(index)) jobs.push_back({index, parse_method(e.methods[m]), e.dt[d], e.hz[d]});
+      if (options.shard.owns(index)) jobs.push_back({index, e.methods[m], e.dt[d], e.hz[d]});
     }
 
   Progress progress(jobs.size(), options.quiet);

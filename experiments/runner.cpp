@@ -217,7 +217,7 @@ bool velocity_changes_on_step_starts(const ccd::Scene& scene, double dt, bool sc
 RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
   RunRecord r;
   r.method = method.name;
-  r.bound = method.name.substr(0, method.name.find('/'));
+  r.bound = method.bound_text;
   r.broad_phase = std::string(method.broad_phase.info->name);
   r.options = options_json(method);
   r.knowledge = std::string(ccd::to_string(method.bound.info->knowledge));

@@ -47,3 +47,54 @@ TEST_CASE("method names compose a bound, a broad phase and a scheduler", "[metho
     }
   }
 }
+
+TEST_CASE("a method is parsed once into its parts, and its parts give the name back", "[methods]") {
+  for (const std::string name : {"aabb/sap", "capsule/grid:cell=2", "horn:4/sap", "horn:pieces=8/sap",
+                                 "horn:4/grid@earliest", "capsule/sap@earliest:stale=0.5",
+                                 "horn/grid@fixed:narrow_from_earliest=1"}) {
+    INFO(name);
+    const ccdlab::MethodSpec m = ccdlab::parse_method(name);
+    CHECK(m.to_string() == name);
+    const ccdlab::MethodSpec again = ccdlab::parse_method(m.to_string());
+    CHECK(again == m);
+    CHECK(ccdlab::options_json(again) == ccdlab::options_json(m));
+    CHECK(m.fixed_step_name() == name.substr(0, name.find('@')));
+    CHECK(m.bound_text + "/" + m.broad_phase_text == m.fixed_step_name());
+    CHECK(m.scheduler_text == (m.scheduler_named ? name.substr(name.find('@') + 1) : std::string()));
+  }
+  const ccdlab::MethodSpec m = ccdlab::parse_method("horn:4/grid:cell=2@earliest:stale=0.5");
+  CHECK(m.bound_text == "horn:4");
+  CHECK(m.bound.info->name == "horn");
+  CHECK(m.broad_phase_text == "grid:cell=2");
+  CHECK(m.broad_phase.info->name == "grid");
+  CHECK(m.scheduler_text == "earliest:stale=0.5");
+  CHECK(m.scheduler.info->name == "earliest");
+  // Every composed name round-trips.
+  for (const std::string& n : ccdlab::all_method_names()) CHECK(ccdlab::parse_method(n).to_string() == n);
+}
+
+TEST_CASE("a bad method names the part that is wrong", "[methods]") {
+  struct Case {
+    std::string name, message;  // message: the start of the error
+  };
+  const Case cases[] = {
+      {"capsule", "method 'capsule' is not of the form BOUND/BROADPHASE[@SCHEDULER]"},
+      {"capsule/grid/sap", "method 'capsule/grid/sap' is not of the form BOUND/BROADPHASE[@SCHEDULER]"},
+      {"capsul/grid", "unknown bound 'capsul'"},
+      {"horn:0/grid", "bound 'horn:0': "},
+      {"capsule/gird", "unknown broad phase 'gird'"},
+      {"capsule/grid:cell=-1", "broad phase 'grid:cell=-1': "},
+      {"capsule/grid@later", "unknown scheduler 'later'"},
+      {"capsule/grid@earliest:stale=2", "scheduler 'earliest:stale=2': "},
+      {"aabb/sap@earliest", "method 'aabb/sap@earliest': bound 'aabb' is an instant bound"},
+  };
+  for (const Case& c : cases) {
+    INFO(c.name);
+    try {
+      ccdlab::parse_method(c.name);
+      FAIL("no error");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).rfind(c.message, 0) == 0);
+    }
+  }
+}

@@ -152,7 +152,7 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
 TEST_CASE("@earliest runs on a scene with scenery and refuses the kinematic option", "[runner][scenery]") {
   ccdlab::Experiment e;
   e.scene_generator = {{"generator", "floor_ramp"}, {"bodies", 4}};
-  e.methods = {"capsule/grid", "capsule/grid@earliest"};
+  e.methods = {ccdlab::parse_method("capsule/grid"), ccdlab::parse_method("capsule/grid@earliest")};
   CHECK_FALSE(ccdlab::load_experiment_scene(e, "e.json").scenery.empty());
   try {
     ccdlab::parse_method("capsule/grid@earliest:kinematic=1");

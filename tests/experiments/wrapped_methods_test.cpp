@@ -99,7 +99,7 @@ TEST_CASE("every @earliest method keeps its guarantee on scenes that wrap around
 TEST_CASE("an @earliest experiment on a scene that wraps around loads", "[runner][periodic]") {
   ccdlab::Experiment e;
   e.scene_generator = {{"generator", "gas"}, {"bodies", 10}, {"wrap", 1}};
-  e.methods = {"capsule/sap", "capsule/sap@earliest"};
+  e.methods = {ccdlab::parse_method("capsule/sap"), ccdlab::parse_method("capsule/sap@earliest")};
   const ccd::Scene scene = ccdlab::load_experiment_scene(e, "e.json");
   CHECK(scene.wraps());
 }

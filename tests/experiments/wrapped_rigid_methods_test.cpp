@@ -75,7 +75,7 @@ TEST_CASE("every method keeps its guarantee on random wrapped rigid scenes", "[r
 TEST_CASE("@earliest refuses shaped bodies in a scene that wraps around, naming the method", "[runner][periodic][rigid]") {
   ccdlab::Experiment e;
   e.scene_generator = {{"generator", "sticks"}, {"bodies", 6}, {"wrap", 1}};
-  e.methods = {"capsule/grid", "capsule/grid@earliest"};
+  e.methods = {ccdlab::parse_method("capsule/grid"), ccdlab::parse_method("capsule/grid@earliest")};
   try {
     ccdlab::load_experiment_scene(e, "e.json");
     FAIL("an @earliest method on a wrapped rigid scene was accepted");
@@ -83,6 +83,6 @@ TEST_CASE("@earliest refuses shaped bodies in a scene that wraps around, naming 
     CHECK(err.field() == "methods[1]");
     CHECK(std::string(err.what()).find("use the fixed-step method capsule/grid") != std::string::npos);
   }
-  e.methods = {"capsule/grid"};
+  e.methods = {ccdlab::parse_method("capsule/grid")};
   CHECK(ccdlab::load_experiment_scene(e, "e.json").wraps());
 }
