@@ -6,6 +6,7 @@
 
 #include <experiments/experiment.hpp>
 #include <experiments/method.hpp>
+#include <experiments/prepare_run.hpp>
 #include <experiments/run_experiment.hpp>
 
 #include <ccd/motion/trajectory.hpp>
@@ -14,7 +15,8 @@
 #include <ccd/util/parallel_for.hpp>
 
 #include <atomic>
-#include <cstdio>
+#include <optional>
+#include <utility>
 
 namespace ccdlab::python {
 namespace {
@@ -23,46 +25,23 @@ py::object run(const py::object& experiment, unsigned threads, std::optional<std
                bool quiet, bool force, bool missed_events) {
   const bool is_path = py::isinstance<py::str>(experiment) || py::hasattr(experiment, "__fspath__");
   std::string file = "experiment";
-  Experiment e;
-  if (is_path) {
-    file = py::str(py::module_::import("os").attr("fspath")(experiment)).cast<std::string>();
-    e = run_interruptible([&]() { return load_experiment(file); });
-  } else {
-    e = experiment_from_json(from_python(experiment, file), file);
-  }
-  if (missed_events) e.list_missed = true;  // as `ccdlab run --list-missed`
+  RunRequest request;  // as `ccdlab run` asks: one preparation (experiments/prepare_run.hpp)
+  request.truth_file = truth_path.value_or(std::string());
+  request.force = force;
+  request.list_missed = missed_events;  // as `ccdlab run --list-missed`
+  std::optional<Experiment> given;
+  if (is_path) file = py::str(py::module_::import("os").attr("fspath")(experiment)).cast<std::string>();
+  else given = experiment_from_json(from_python(experiment, file), file);
   std::atomic<bool> cancel{false};
   nlohmann::json results = run_interruptible(
       [&]() {
-        const ccd::Scene scene = load_experiment_scene(e, file);
-        check_dt_against_horizon(e, scene.horizon, file);
+        const PreparedRun prepared =
+            given ? prepare_run(std::move(*given), file, request) : prepare_run(file, request);
         RunOptions options;
         options.threads = static_cast<int>(ccd::resolve_threads(threads));
         options.quiet = quiet;
         options.cancel = &cancel;
-        ccd::TruthFile stored;
-        if (truth_path) {
-          stored = ccd::load_truth(*truth_path);
-          check_stored_truth(stored, scene, *truth_path);
-          options.truth = &stored;
-          options.truth_file = *truth_path;
-        }
-        const double work = experiment_work(e, scene.bodies.size(), scene.horizon);
-        if (work > kMaxWorkWithoutForce && !force) {
-          char text[64];
-          std::snprintf(text, sizeof text, "%.3g body-steps, above the limit %.3g", work,
-                        kMaxWorkWithoutForce);
-          throw ccd::InputError(file, "dt", std::string("the run needs ") + text + " without force=True");
-        }
-        try {
-          return run_experiment(e, scene, options);
-        } catch (const ccd::TooManyPieces& err) {  // as `ccdlab run` reports it
-          throw ccd::InputError(
-              e.scene_path.empty() ? file : e.scene_path,
-              (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
-              "needs more than " + std::to_string(err.limit()) +
-                  " trajectory pieces over the horizon (wall reflections and acceleration changes)");
-        }
+        return run_prepared(prepared, options);
       },
       &cancel);
   return to_python(results);

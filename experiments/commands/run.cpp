@@ -5,6 +5,7 @@
 
 #include "cloth_experiment_work.hpp"
 #include "../run_cloth_experiment.hpp"
+#include "../prepare_run.hpp"
 #include "../run_experiment.hpp"
 #include "../summary.hpp"
 #include "../work_estimate.hpp"
@@ -211,55 +212,17 @@ int run_run(std::span<const std::string> args) {
 
   // What is being done, for the one line that says what was too big if memory runs out.
   std::string doing = "reading " + experiment_path;
-  ccd::TruthFile stored_truth;  // --truth FILE: read before the run, used by it
   try {
-    Experiment e = load_experiment(experiment_path);
-    if (list_missed) e.list_missed = true;
-    if (!e.scene_path.empty()) doing = "reading the scene " + e.scene_path;
-    else doing = "generating the scene " + e.scene_generator.dump();
-    const ccd::Scene scene = load_experiment_scene(e, experiment_path);
-    check_dt_against_horizon(e, scene.horizon, experiment_path);
-
-    if (!truth_path.empty()) {
-      doing = "reading " + truth_path;
-      stored_truth = ccd::load_truth(truth_path);
-      if (!check_stored_truth(stored_truth, scene, truth_path) && !options.quiet)
-        std::cerr << "ccdlab run: note: " << truth_path << " is " << ccd::kTruthFormatV1
-                  << " (no scene digest): only its horizon and body indices were checked\n";
-      options.truth = &stored_truth;
-      options.truth_file = truth_path;
-    }
-
-    // The work, before any of it: refused past the limit unless forced.
-    const double work = experiment_work(e, scene.bodies.size(), scene.horizon, options.shard.index,
-                                        options.shard.count);
-    const double most_steps = steps_per_job(scene.horizon, e.dt.back());
-    auto number = [](double x) {
-      char text[32];
-      std::snprintf(text, sizeof text, "%.3g", x);
-      return std::string(text);
-    };
-    if (work > kMaxWorkWithoutForce && !force)
-      throw ccd::InputError(experiment_path, "dt",
-                            "the run needs " + number(work) + " body-steps (" + std::to_string(scene.bodies.size()) +
-                                " bodies, up to " + number(most_steps) + " steps per job at dt = " +
-                                number(e.dt.back()) + "), above the limit " + number(kMaxWorkWithoutForce) +
-                                " without --force");
-    // Shaped bodies: the certified truth (unless read from --truth) and the rigid narrow
-    // phase, which tests at most a window's candidate pairs per step.
-    double pair_work = 0.0;
-    if (scene.has_non_spheres()) try {
-      const ccd::Trajectories traj(scene);
-      const double steps = experiment_work(e, 1, scene.horizon, options.shard.index, options.shard.count);
-      pair_work = run_pair_work(ccd::RigidMotion(scene, traj), steps, !truth_path.empty());
-      check_work({pair_work, kMaxPairWorkWithoutForce, "certified pair tests",
-                  std::to_string(scene.bodies.size()) + " bodies with shapes, " + number(steps) + " steps in all; " +
-                      kPairWorkDetail},
-                 force, experiment_path, "scene");
-    } catch (const ccd::TooManyPieces&) {
-      // reported below by the run itself, naming the body
-    }
-
+    RunRequest request;
+    request.truth_file = truth_path;
+    request.force = force;
+    request.list_missed = list_missed;
+    request.shard = options.shard;
+    const PreparedRun run = prepare_run(experiment_path, request, &doing);  // the library's checks
+    const Experiment& e = run.experiment;
+    if (!truth_path.empty() && !run.truth_has_digest && !options.quiet)
+      std::cerr << "ccdlab run: note: " << truth_path << " is " << ccd::kTruthFormatV1
+                << " (no scene digest): only its horizon and body indices were checked\n";
     if (out_path.empty()) {
       out_path = "results/" + e.name +
                  (options.shard.count > 1 ? ".shard" + std::to_string(options.shard.index) + "of" +
@@ -273,24 +236,16 @@ int run_run(std::span<const std::string> args) {
     std::optional<ccd::OutputFile> summary;  // the side-file, checked now and written with the results
     if (out_path != "-") summary.emplace(summary_path(out_path), inputs);
     if (!options.quiet)
-      std::cerr << "ccdlab: work: " << number(work) << " body-steps (" << scene.bodies.size() << " bodies, up to "
-                << number(most_steps) << " steps per job)"
-                << (pair_work > 0.0 ? ", " + number(pair_work) + " certified pair tests" : std::string()) << "\n";
+      std::cerr << "ccdlab: work: " << work_number(run.work) << " body-steps (" << run.scene.bodies.size()
+                << " bodies, up to " << work_number(run.most_steps) << " steps per job)"
+                << (run.pair_work > 0.0 ? ", " + work_number(run.pair_work) + " certified pair tests" : std::string())
+                << "\n";
 
     options.cancel = &g_cancel;
     install_cancel_handlers();
     doing = "running " + std::to_string(e.methods.size() * e.dt.size()) + " jobs over " +
-            std::to_string(scene.bodies.size()) + " bodies";
-    nlohmann::json results;
-    try {
-      results = run_experiment(e, scene, options);
-    } catch (const ccd::TooManyPieces& err) {
-      throw ccd::InputError(e.scene_path.empty() ? experiment_path : e.scene_path,
-                            (e.scene_path.empty() ? "scene: bodies[" : "bodies[") + std::to_string(err.body()) + "]",
-                            "needs more than " + std::to_string(err.limit()) +
-                                " trajectory pieces over the horizon (wall reflections and acceleration changes; "
-                                "a body bouncing ever faster or too fast for its box)");
-    }
+            std::to_string(run.scene.bodies.size()) + " bodies";
+    const nlohmann::json results = run_prepared(run, options);
     if (results.is_null()) {
       ::alarm(0);  // stopped in time: the message once
       std::cerr << "ccdlab run: interrupted; no results written\n";

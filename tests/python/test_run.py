@@ -52,6 +52,43 @@ def test_run_gives_the_counts_of_the_command_line(tmp_path, cli, scene_file):
     assert missed["aabb/sap"] > 0 and missed["capsule/grid"] == 0  # the run can tell methods apart
 
 
+def without_times(results):
+    """The results but their times and environment: what the same run gives twice."""
+    out = {k: v for k, v in results.items() if k not in ("environment", "records", "peak_memory_bytes")}
+    out["records"] = counts(results)
+    out["truth"] = {k: v for k, v in results["truth"].items() if k != "seconds"}
+    return out
+
+
+def test_run_and_the_command_line_share_one_preparation(tmp_path, cli, scene_file):
+    # A stored truth (its digest checked by both), the same results document but its times.
+    truth = tmp_path / "truth.json"
+    cli("truth", scene_file, "-o", truth, "--quiet")
+    experiment = write_json(tmp_path / "small.json", small_experiment(scene_file))
+    out = tmp_path / "results.json"
+    cli("run", experiment, "-o", out, "--quiet", "--truth", truth, "--list-missed")
+    from_cli = json.loads(out.read_text())
+    from_python = ccdlab.run(str(experiment), truth=str(truth), missed_events=True)
+    assert from_cli["truth"]["source"] == from_python["truth"]["source"] == str(truth)
+    assert without_times(from_python) == without_times(from_cli)
+    # The same refusals, in the same words: a truth of another scene, the work limit, and a
+    # dt the horizon cannot resolve.
+    other_scene = tmp_path / "other.json"
+    ccdlab.generate("gas", bodies=10, seed=4).save(str(other_scene))
+    other_truth = tmp_path / "other-truth.json"
+    cli("truth", other_scene, "-o", other_truth, "--quiet")
+    huge = write_json(tmp_path / "huge.json", dict(small_experiment(scene_file), dt=[1e-10]))
+    tiny = write_json(tmp_path / "tiny.json", dict(small_experiment(scene_file), dt=[1e-300]))
+    for path, truth_file in ((experiment, other_truth), (huge, None), (tiny, None)):
+        args = ["run", path, "-o", tmp_path / "none.json", "--quiet"] + (["--truth", truth_file] if truth_file else [])
+        run = cli(*args, check=False)
+        with pytest.raises(ValueError) as err:
+            ccdlab.run(str(path), truth=str(truth_file) if truth_file else None)
+        assert run.returncode == 2
+        assert run.stderr == f"ccdlab run: {err.value}\n"
+    assert not (tmp_path / "none.json").exists()
+
+
 def test_missed_events_are_listed_on_request(tmp_path, cli, scene_file):
     results = ccdlab.run(small_experiment(scene_file), missed_events=True)
     a, b, enter, exit = ccdlab.truth(ccdlab.load_scene(str(scene_file)))
