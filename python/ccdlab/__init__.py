@@ -19,3 +19,13 @@ for _name in dir(_ccdlab):
         except (AttributeError, TypeError):  # builtin functions keep theirs
             pass
 del _name, _obj
+
+from .arrays import scene_from_arrays  # noqa: E402
+from .results import Results, missed  # noqa: E402
+
+
+def run(*args, **kwargs):
+    return Results(_ccdlab.run(*args, **kwargs))
+
+
+run.__doc__ = (_ccdlab.run.__doc__ or "") + "\n\nReturns a ccdlab.Results (a dict with helpers)."
