@@ -16,4 +16,5 @@ PYBIND11_MODULE(_ccdlab, m) {
   bind_bounds(m);
   bind_run(m);
   bind_mesh_ccd(m);
+  bind_queries(m);
 }
