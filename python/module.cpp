@@ -17,4 +17,5 @@ PYBIND11_MODULE(_ccdlab, m) {
   bind_run(m);
   bind_mesh_ccd(m);
   bind_queries(m);
+  bind_import(m);
 }
