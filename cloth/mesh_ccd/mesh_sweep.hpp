@@ -9,9 +9,10 @@
 //
 // Slabs. A one-level sweep of a sheet is O(n^1.5): along the sweep axis a box's interval
 // overlaps the starts of a whole column of the sheet. So the slab axis is cut into S slabs
-// of equal width w (by default twice the median extent of the face boxes on that axis,
-// S <= the vertex count); slab(x) = clamp(floor((x - origin) / w), 0, S - 1) is monotone in
-// x, as computed. A box goes into every slab from slab(lo) to slab(hi) of its slab-axis
+// of equal width w (S <= 2^16 and <= the vertex count); slab(x) = clamp(floor((x - origin)
+// / w), 0, S - 1) is monotone in x, as computed. The sweep axis, the slab axis and w are
+// chosen by the estimated cost of the edge-edge sweep on a sample of edges (mesh_sweep.cpp,
+// choose_layout); only the speed depends on them. A box goes into every slab from slab(lo) to slab(hi) of its slab-axis
 // interval; each slab is swept on its own, in the same (start, index) order. Two boxes that
 // overlap share slab(max of their two lows) = max of their first slabs, and the pair is
 // reported in that slab only: each pair exactly once, whatever the layout (one slab, boxes
@@ -47,8 +48,9 @@ struct MeshSweepOptions {
   double separation = 0.0;  ///< minimum separation, m, >= 0, finite
   bool time_halves = true;  ///< also test the boxes over [0, 1/2] and [1/2, 1]
   unsigned threads = 1;     ///< threads building and sorting the boxes (>= 1)
-  /// Slab width on the slab axis: 0 chooses it (twice the median face-box extent on
-  /// that axis); infinity (or anything not > 0 and finite) gives one slab.
+  /// Slab width: 0 chooses the layout (axes and width) by a sampled cost estimate; > 0 and
+  /// finite: that width, the axes of largest and second-largest variance of the vertex
+  /// boxes' centres; anything else (infinity): one slab.
   double slab_width = 0.0;
 };
 
