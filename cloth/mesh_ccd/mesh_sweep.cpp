@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -289,7 +290,41 @@ struct PrimitiveSet {
       for (std::size_t i = block * kBuildBlock; i < end; ++i) keys[i] = {lo(i), static_cast<std::uint32_t>(i)};
     });
   }
-  void sort() { std::sort(keys.begin(), keys.end()); }
+  // The order of std::sort on (start, index) (starts are finite; -0 and +0 are equal), by
+  // an LSD radix sort on the starts' bits made monotone, 16 bits a pass: stable, and the
+  // keys come in index order (sort_keys), so equal starts stay in index order.
+  void sort() {
+    const std::size_t n = keys.size();
+    if (n < 2) return;
+    struct Rec {
+      std::uint64_t bits;
+      std::size_t pos;
+    };
+    std::vector<Rec> a(n), b(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double x = keys[i].first + 0.0;  // -0 -> +0
+      std::uint64_t u;
+      std::memcpy(&u, &x, sizeof u);
+      u = (u >> 63) ? ~u : (u | (std::uint64_t{1} << 63));
+      a[i] = {u, i};
+    }
+    std::vector<std::size_t> count(1 << 16);
+    for (int shift = 0; shift < 64; shift += 16) {
+      std::fill(count.begin(), count.end(), 0);
+      for (const Rec& r : a) ++count[(r.bits >> shift) & 0xffff];
+      if (count[(a[0].bits >> shift) & 0xffff] == n) continue;  // one digit: already in order
+      std::size_t sum = 0;
+      for (std::size_t& c : count) {
+        const std::size_t k = c;
+        c = sum;
+        sum += k;
+      }
+      for (const Rec& r : a) b[count[(r.bits >> shift) & 0xffff]++] = r;
+      a.swap(b);
+    }
+    const std::vector<std::pair<double, std::uint32_t>> in = keys;
+    for (std::size_t i = 0; i < n; ++i) keys[i] = in[a[i].pos];
+  }
   // fill(i, item, halves or nullptr) builds primitive i.
   template <class Fill>
   void build(std::vector<Item>& items, std::vector<Halves>& halves, bool with_halves, unsigned threads,
