@@ -222,7 +222,9 @@ Layout choose_layout(std::span<const Aabb> vb, std::span<const std::array<std::u
 void place_in_slabs(const std::vector<Item>& items, const Slabs& slabs, unsigned threads,
                     std::vector<MeshSweep::SlabItem>& out, std::vector<std::size_t>& offsets) {
   const std::size_t n = items.size(), S = slabs.count;
-  const std::size_t parts = std::max<std::size_t>(1, std::min<std::size_t>(threads, (n + kBuildBlock - 1) / kBuildBlock));
+  // At most 8 parts: each holds a count per slab.
+  const std::size_t parts =
+      std::max<std::size_t>(1, std::min<std::size_t>({threads, std::size_t{8}, (n + kBuildBlock - 1) / kBuildBlock}));
   std::vector<std::vector<std::size_t>> counts(parts, std::vector<std::size_t>(S + 1, 0));
   auto range = [&](std::size_t p) { return std::pair{n * p / parts, n * (p + 1) / parts}; };
   parallel_for(parts, threads, [&](std::size_t p, unsigned) {
