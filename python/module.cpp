@@ -5,8 +5,8 @@
 PYBIND11_MODULE(ccdlab, m) {
   using namespace ccdlab::python;
   m.doc() =
-      "ccdlab: continuous collision detection of moving spheres (scenes, exact ground truth, "
-      "bounds, broad phases, experiments)";
+      "ccdlab: continuous collision detection of spheres and rigid bodies among static scenery, and of "
+      "triangle meshes (scenes, exact ground truth, bounds, broad phases, experiments, mesh CCD)";
   m.attr("__version__") = CCDLAB_VERSION;
   bind_errors(m);
   bind_scene(m);
