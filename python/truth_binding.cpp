@@ -6,6 +6,8 @@
 // static_grazing, static_undecided when certified) hold the body-scenery events of a scene with scenery.
 #include "bindings.hpp"
 
+#include <ccd/io/input_error.hpp>
+
 #include <algorithm>
 #include <sstream>
 #include "interruptible.hpp"
@@ -149,25 +151,42 @@ void bind_truth(py::module_& m) {
 
   m.def(
       "truth",
-      [](const PyScene& scene, unsigned threads) {
+      [](const PyScene& scene, unsigned threads, const py::object& progress) {
+        if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+          throw ccd::InputError("ccdlab.truth", "progress", "must be callable as progress(done, total), or None");
         std::atomic<bool> cancel{false};
+        std::atomic<std::size_t> done{0}, total{0};
+        std::size_t reported = static_cast<std::size_t>(-1);
+        const auto report = [&] {  // with the GIL, on the calling thread
+          const std::size_t d = done.load(), n = total.load();
+          if (progress.is_none() || n == 0 || d == reported) return;
+          reported = d;
+          progress(d, n);
+        };
         ccd::Truth truth = run_interruptible(
             [&]() {
               ccd::TruthOptions options;
               options.threads = threads;
               options.cancel = &cancel;
+              if (!progress.is_none())
+                options.progress = [&](std::size_t d, std::size_t n) {
+                  total.store(n);
+                  done.store(d);
+                };
               const ccd::RigidMotion motion(scene.scene(), *scene.trajectories());
               ccd::Truth t = ccd::compute_truth(motion, scene.scene().scenery, options);
               t.scene_sha256 = ccd::scene_digest(scene.scene());
               return t;
             },
-            &cancel);
+            &cancel, report);
         return make_truth(std::move(truth));
       },
-      py::arg("scene"), py::arg("threads") = 0,
+      py::arg("scene"), py::arg("threads") = 0, py::arg("progress") = py::none(),
       "The ground truth of the scene, as `ccdlab truth` computes it (threads=0: every core): exact for "
       "spheres, certified brackets with error fields for other shapes, static events with scenery; "
-      "Ctrl-C stops it");
+      "progress(done, total) is called on the calling thread as the work advances (units of the "
+      "truth's own progress, as `ccdlab truth` prints it), at most every 50 ms; Ctrl-C, or an "
+      "exception of progress, stops it");
   m.def(
       "load_truth",
       [](const std::string& path) {

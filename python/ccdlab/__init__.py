@@ -21,6 +21,7 @@ for _name in dir(_ccdlab):
 del _name, _obj
 
 from .arrays import scene_from_arrays  # noqa: E402
+from .progress import with_progress as _with_progress  # noqa: E402
 from .results import Results, missed  # noqa: E402
 
 
@@ -29,3 +30,11 @@ def run(*args, **kwargs):
 
 
 run.__doc__ = (_ccdlab.run.__doc__ or "") + "\n\nReturns a ccdlab.Results (a dict with helpers)."
+
+
+def truth(scene, threads=0, progress=None):
+    return _with_progress(_ccdlab.truth, progress, "ccdlab truth", scene, threads=threads)
+
+
+truth.__doc__ = (_ccdlab.truth.__doc__ or "") + (
+    "\n\nprogress=True draws a bar (tqdm's when tqdm is installed, else a line on stderr).")
