@@ -5,6 +5,7 @@
 #include "cloth_experiment_work.hpp"
 #include "../run_cloth_experiment.hpp"
 #include "../run_experiment.hpp"
+#include "../missed_list.hpp"
 #include "../summary.hpp"
 #include "../work_estimate.hpp"
 
@@ -262,7 +263,9 @@ int run_run(std::span<const std::string> args) {
     // The answer in one table: on the terminal (stderr when the results go to stdout) and
     // beside the results as Markdown, written together with them.
     commit_with_summary(output, summary, results);
-    (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
+    std::ostream& terminal = out_path == "-" ? std::cerr : std::cout;
+    terminal << "\n" << summary_text(results) << "\n";
+    if (e.list_missed) terminal << missed_list_text(results) << "\n";  // which contacts, after the table
     if (summary) summary_file = summary->path();
     if (!options.quiet) {
       std::size_t flagged = 0;
@@ -288,11 +291,12 @@ extern const Command kRunCommand = {
     "\n"
     "Runs every method of the experiment at every timestep against the scene's exact\n"
     "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
-    "summary (per method: the largest dt with no miss, the cost at the cheapest zero-miss\n"
-    "point, the missed fraction at every dt) and writes it as Markdown beside the results\n"
-    "(RESULTS.summary.md).\n"
+    "summary (the contacts to detect, body-body and body-scenery; per method: the largest\n"
+    "dt with no miss at it and below, the cheapest zero-miss cost, the missed contacts at\n"
+    "every dt) and writes it as Markdown beside the results (RESULTS.summary.md).\n"
     "\n"
-    "  -o, --output FILE  results file (default results/NAME.json; '-' = standard output);\n"
+    "  -o, --output FILE  results file (default results/NAME.json, relative to the current\n"
+    "                     directory; '-' = standard output);\n"
     "                     checked before the run (a regular file, not an input, in a folder\n"
     "                     that takes a file), written atomically, never partially (Ctrl-C\n"
     "                     leaves no file); RESULTS.summary.md is checked with it and written\n"
@@ -313,7 +317,10 @@ extern const Command kRunCommand = {
     "                     particle-steps of simulation, 4e9 bytes of states kept or 1e10\n"
     "                     particle-steps of checks over its jobs (docs/formats.md)\n"
     "  --list-missed      every record lists the contact events it missed (missed_events:\n"
-    "                     a, b, enter, exit), as the experiment option \"list_missed\": true\n"
+    "                     a, b, enter, exit; static_missed_events: body, polygon, enter,\n"
+    "                     exit), as the experiment option \"list_missed\": true; after the\n"
+    "                     summary, per method at the largest dt at which it missed a contact,\n"
+    "                     the missed contacts (at most 20 lines in all, then a count)\n"
     "  --truth-cache DIR  cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
     "                     mesh truth is kept, one file per motion digest, read back when\n"
     "                     present (default: cloth-truth/ beside the results file)\n"
