@@ -45,7 +45,9 @@ int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
   auto print_help = [](std::ostream& out) {
     out << "ccdlab " << ccdlab::version_string()
-        << ": a research toolkit for continuous collision detection of moving spheres.\n\n"
+        << ": a research toolkit for continuous collision detection: exact ground truth for\n"
+           "spheres and rigid bodies among static scenery, cloth and triangle meshes; discrete and\n"
+           "conservative methods swept over the timestep against it; a viewer of every missed contact.\n\n"
            "usage: ccdlab COMMAND [ARGS...]\n       ccdlab COMMAND --help\n       ccdlab --version\n\n"
            "commands:\n";
     for (const ccdlab::Command& c : ccdlab::commands())

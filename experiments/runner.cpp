@@ -288,6 +288,9 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
       ++r.static_initial_contacts;
     else if (!std::isnan(c.static_lag[e]))
       ++r.static_detected;
+    else if (in.list_missed)
+      r.static_missed_events.push_back({in.static_events[e].body, in.static_events[e].polygon,
+                                        in.static_events[e].enter, in.static_events[e].exit});
   }
   r.static_missed = r.static_events - r.static_initial_contacts - r.static_detected - r.static_undecided;
   std::sort(r.missed_events.begin(), r.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
@@ -404,6 +407,10 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
     for (const MissedEvent& m : r.missed_events)
       missed.push_back({{"a", m.a}, {"b", m.b}, {"enter", m.enter}, {"exit", m.exit}});
     j["missed_events"] = std::move(missed);
+    nlohmann::json missed_static = nlohmann::json::array();
+    for (const MissedEvent& m : r.static_missed_events)
+      missed_static.push_back({{"body", m.a}, {"polygon", m.b}, {"enter", m.enter}, {"exit", m.exit}});
+    j["static_missed_events"] = std::move(missed_static);
   }
   return j;
 }

@@ -136,6 +136,9 @@ struct RunRecord {
   std::uint64_t static_narrow_calls = 0;
   bool counts_stable = true;           ///< identical counts over all repeats
   std::vector<MissedEvent> missed_events;  ///< with RunInput::list_missed: sorted by enter (then a, b)
+  /// With RunInput::list_missed: the body-scenery events missed, a = body, b = polygon (an
+  /// index into Scene::scenery), in the truth's order (enter, body, polygon).
+  std::vector<MissedEvent> static_missed_events;
   bool cancelled = false;
 };
 

@@ -47,7 +47,7 @@ int tumble_samples(const ccd::RotationPiece& q) {
 // trajectory piece and per rotation piece or sampled pose) unless forced.
 void check_page_size(const ccd::Scene& scene, const ccd::Trajectories& traj, const ccd::Rotations& rot,
                      const ViewInputs& in) {
-  double entries = static_cast<double>(traj.total_pieces()), tumbles = 0.0;
+  double entries = static_cast<double>(traj.total_pieces() + scene.scenery.size()), tumbles = 0.0;
   if (!rot.empty())
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
       for (const ccd::RotationPiece& q : rot.pieces(i)) {
@@ -67,9 +67,34 @@ void check_page_size(const ccd::Scene& scene, const ccd::Trajectories& traj, con
     throw std::bad_alloc();
 }
 
+// A record's body-scenery misses (static_missed_events), checked against the scene's body
+// and polygon counts and horizon, as the page shows them: {body, polygon, enter, exit}.
+json static_missed_of(const json& m, const ccd::JsonReader& r, const std::string& at, std::size_t bodies,
+                      std::size_t polygons, double horizon) {
+  if (!m.is_array()) r.fail(at, "must be an array");
+  json missed = json::array();
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const json& e = m[k];
+    const std::string f = at + "[" + std::to_string(k) + "]";
+    if (!e.is_object()) r.fail(f, "must be an object {body, polygon, enter, exit}");
+    const std::uint32_t body = r.index(r.require(e, "body", f), f + ".body");
+    const std::uint32_t polygon = r.index(r.require(e, "polygon", f), f + ".polygon");
+    const double enter = r.number(r.require(e, "enter", f), f + ".enter");
+    const double exit = r.number(r.require(e, "exit", f), f + ".exit");
+    if (body >= bodies) r.fail(f + ".body", "must be a body of the scene (it has " + std::to_string(bodies) + ")");
+    if (polygon >= polygons)
+      r.fail(f + ".polygon", "must be a scenery polygon of the scene (it has " + std::to_string(polygons) + ")");
+    if (!(0.0 <= enter && enter <= exit && exit <= horizon))
+      r.fail(f + ".exit", "must satisfy 0 <= enter <= exit <= horizon");
+    missed.push_back({{"body", body}, {"polygon", polygon}, {"enter", enter}, {"exit", exit}});
+  }
+  return missed;
+}
+
 // The records of a results file, with what the page shows of each (its missed contacts
-// checked against the scene's body count and horizon).
-json runs_of(const json& results, const std::string& file, std::size_t bodies, double horizon) {
+// checked against the scene's body and scenery polygon counts and horizon).
+json runs_of(const json& results, const std::string& file, std::size_t bodies, std::size_t polygons,
+             double horizon) {
   const ccd::JsonReader r{file};
   json runs = json::array();
   const double accel = results["experiment"]["acceleration_bound_used"].get<double>();
@@ -80,7 +105,8 @@ json runs_of(const json& results, const std::string& file, std::size_t bodies, d
     json run;
     for (const char* k : {"method", "bound", "broad_phase", "options", "knowledge", "continuous", "conservative", "dt",
                           "hz", "steps", "events", "initial_contacts", "detected", "missed", "candidates",
-                          "bound_candidates", "false_positives", "total_seconds"})
+                          "bound_candidates", "false_positives", "total_seconds", "undecided", "static_events",
+                          "static_initial_contacts", "static_undecided", "static_detected", "static_missed"})
       if (rec.contains(k)) run[k] = rec[k];
     run["acceleration_bound"] = accel;
     if (auto m = rec.find("missed_events"); m != rec.end()) {
@@ -102,6 +128,8 @@ json runs_of(const json& results, const std::string& file, std::size_t bodies, d
       }
       run["missed_events"] = std::move(missed);
     }
+    if (auto m = rec.find("static_missed_events"); m != rec.end())
+      run["static_missed_events"] = static_missed_of(*m, r, at + ".static_missed_events", bodies, polygons, horizon);
     runs.push_back(std::move(run));
   }
   return runs;
@@ -151,6 +179,15 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
     shapes.push_back(std::move(j));
   }
   data["shapes"] = std::move(shapes);
+  // The static scenery (polygons, then the triangles of scenery_mesh): each polygon's
+  // vertices, flat [x0, y0, z0, x1, ...].
+  json scenery = json::array();
+  for (const ccd::StaticPolygon& poly : scene.scenery) {
+    json flat = json::array();
+    for (const ccd::Vec3& v : poly.vertices) append(flat, v);
+    scenery.push_back(std::move(flat));
+  }
+  data["scenery"] = std::move(scenery);
 
   // Per body: radius, shape index (-1: a plain sphere), centre pieces
   // [t0, t1, p, v, a] and, for spinning shapes, rotation pieces [t0, t1, q (w x y z), omega].
@@ -199,14 +236,26 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
 
   data["truth_file"] = in.truth ? json(ccd::escape_invalid_utf8(in.truth_file)) : json(nullptr);
   data["truth"] = json(nullptr);
+  data["static_truth"] = json(nullptr);
   if (in.truth) {
     json events = json::array();
     for (const ccd::ContactEvent& e : in.truth->events)
       events.push_back(json::array({e.a, e.b, e.enter, e.exit}));
     data["truth"] = std::move(events);
+    // Body-scenery contacts: [body, polygon, enter, exit].
+    json statics = json::array();
+    for (std::size_t i = 0; i < in.truth->static_events.size(); ++i) {
+      const ccd::StaticEvent& e = in.truth->static_events[i];
+      if (e.body >= n || e.polygon >= scene.scenery.size())
+        throw ccd::InputError(in.truth_file, "static_events[" + std::to_string(i) + "]",
+                              "is not a body and scenery polygon of the scene");
+      statics.push_back(json::array({e.body, e.polygon, e.enter, e.exit}));
+    }
+    data["static_truth"] = std::move(statics);
   }
   data["results_file"] = in.results ? json(ccd::escape_invalid_utf8(in.results_file)) : json(nullptr);
-  data["runs"] = in.results ? runs_of(*in.results, in.results_file, n, scene.horizon) : json::array();
+  data["runs"] = in.results ? runs_of(*in.results, in.results_file, n, scene.scenery.size(), scene.horizon)
+                            : json::array();
   return data;
 }
 

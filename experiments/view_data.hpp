@@ -8,8 +8,11 @@
 //
 // Numbers are written with 9 significant digits (ample for drawing; the pieces' exact
 // values stay in the C++ model). Inputs are checked: a results or truth file of another
-// scene (its scene digest differs), a malformed `missed_events` entry, or a cloth frames
-// file with an index out of range throws ccd::InputError naming the file and the field.
+// scene (its scene digest differs), a malformed `missed_events` or `static_missed_events`
+// entry (a body or scenery polygon the scene lacks), or a cloth frames file with an index
+// out of range throws ccd::InputError naming the file and the field. The scene's static
+// scenery (polygons and mesh triangles) goes to the page as `scenery`, the truth's
+// body-scenery events as `static_truth`.
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/truth_io.hpp>
 

@@ -5,11 +5,13 @@ usage: /usr/bin/python3 scripts/animate.py SCENE.json --results RESULTS.json --m
            --dt DT [--from T0] [--to T1] [--fps N] [--frames-per-step K] [--force] -o OUT.gif|OUT.mp4
 
 Draws the scene between T0 and T1, projected on the two widest axes of its box:
-  left    every body at the frame's time (grey); the bodies of each contact the method
-          missed in red while the contact lasts, circled where it happened;
-  right   a zoom on the missed contact nearest in time: the two bodies now (filled), where
-          the method saw them at its samples t_k = k dt (outlines), their paths, and the
-          contact (red) at its exact enter time;
+  left    every body at the frame's time (grey) over the static scenery (brown: floors,
+          ramps, mesh triangles); the bodies of each contact the method missed, body-body or
+          body-scenery, in red while the contact lasts, circled where it happened;
+  right   a zoom on the missed contact nearest in time: the two bodies (or the body and its
+          scenery polygon, outlined in red) now (filled), where the method saw them at its
+          samples t_k = k dt (outlines), their paths, and the contact (red) at its exact enter
+          time;
   bottom  a time line: the samples (ticks), the missed contacts (red bars), the frame's time.
 The missed contacts are the runner's own (ccdlab.run with missed_events=True, the list of
 `ccdlab run --list-missed`): an event is
@@ -180,15 +182,27 @@ def animate(args):
         except ValueError as e:
             raise BadInput(str(e))
     run_record = run["records"][0]
-    if record is not None and record.get("missed") != run_record["missed"]:
-        raise BadInput(f"{args.results}: records[{res['records'].index(record)}].missed: is "
-                       f"{record.get('missed')}, the method misses {run_record['missed']} here")
+    for key in ("missed", "static_missed"):
+        if record is not None and record.get(key, 0) != run_record.get(key, 0):
+            raise BadInput(f"{args.results}: records[{res['records'].index(record)}].{key}: is "
+                           f"{record.get(key)}, the method misses {run_record.get(key, 0)} here")
     if record is None:
         print(f"ccdlab animate: note: {args.results} has no record of {args.method} at dt = {args.dt:g}; "
               "computed", file=sys.stderr)
-    missed = [m for m in run_record["missed_events"] if m["exit"] >= t0 and m["enter"] <= t1]
-    print(f"ccdlab animate: {args.method} at dt = {dt:.6g} s misses {run_record['missed']} of "
-          f"{run_record['events']} contacts, {len(missed)} between {t0:g} and {t1:g} s", file=sys.stderr)
+    # Body-body misses (a, b) and body-scenery misses (body, polygon: b = -1), by entry.
+    missed = [{"a": m["a"], "b": m["b"], "polygon": -1, "enter": m["enter"], "exit": m["exit"]}
+              for m in run_record["missed_events"]]
+    missed += [{"a": m["body"], "b": -1, "polygon": m["polygon"], "enter": m["enter"], "exit": m["exit"]}
+               for m in run_record.get("static_missed_events", [])]
+    missed = sorted((m for m in missed if m["exit"] >= t0 and m["enter"] <= t1), key=lambda m: m["enter"])
+    r = run_record
+    body_total = r["events"] - r["initial_contacts"] - r.get("undecided", 0)
+    scenery_total = r.get("static_events", 0) - r.get("static_initial_contacts", 0) - r.get("static_undecided", 0)
+    kinds = (f" ({r['missed']} of {body_total} body-body, {r.get('static_missed', 0)} of {scenery_total} "
+             "body-scenery)" if r.get("static_events", 0) else "")
+    print(f"ccdlab animate: {args.method} at dt = {dt:.6g} s misses {r['missed'] + r.get('static_missed', 0)} of "
+          f"{body_total + scenery_total} contacts{kinds}, {len(missed)} between {t0:g} and {t1:g} s",
+          file=sys.stderr)
 
     times = np.linspace(t0, t1, frames)
     samples = np.arange(math.ceil(t0 / dt - 1e-9), math.floor(t1 / dt + 1e-9) + 1) * dt
@@ -196,15 +210,23 @@ def animate(args):
     pos = scene.positions(times.tolist())
     pos_samples = scene.positions(samples.tolist()) if samples.size else np.zeros((0, len(scene), 3))
     radius = scene.radius
-    ax_u, ax_v = projection_axes(scene.to_json(), pos)
+    scene_json = scene.to_json()
+    ax_u, ax_v = projection_axes(scene_json, pos)
     names = "xyz"
+    # The scenery as Scene::scenery orders it: the polygons, then the mesh's triangles.
+    mesh = scene_json.get("scenery_mesh") or {}
+    scenery = [np.array(p["polygon"], dtype=np.float64) for p in scene_json.get("scenery", [])]
+    scenery += [np.array([mesh["vertices"][i] for i in tri], dtype=np.float64) for tri in mesh.get("triangles", [])]
 
     ev_a = np.array([m["a"] for m in missed], dtype=np.int64)
     ev_b = np.array([m["b"] for m in missed], dtype=np.int64)
     ev_enter = np.array([m["enter"] for m in missed], dtype=np.float64)
     ev_exit = np.array([m["exit"] for m in missed], dtype=np.float64)
-    ev_where = 0.5 * (scene.positions(ev_enter.tolist())[np.arange(len(ev_a)), ev_a] +
-                      scene.positions(ev_enter.tolist())[np.arange(len(ev_a)), ev_b]) if len(ev_a) else np.zeros((0, 3))
+    ev_polygon = np.array([m["polygon"] for m in missed], dtype=np.int64)
+    # Where: between the two centres at entry; a body-scenery contact, the body's centre.
+    at_enter = scene.positions(ev_enter.tolist()) if len(ev_a) else np.zeros((0, len(scene), 3))
+    ev_where = np.array([0.5 * (at_enter[k, ev_a[k]] + at_enter[k, ev_b[k]]) if ev_b[k] >= 0 else at_enter[k, ev_a[k]]
+                         for k in range(len(ev_a))]).reshape(-1, 3)
 
     fig = plt.figure(figsize=(11, 6.4))
     grid = fig.add_gridspec(2, 2, height_ratios=[5, 1], hspace=0.3, wspace=0.15)
@@ -219,6 +241,13 @@ def animate(args):
         a.set_aspect("equal")
         a.set_xlabel(f"{names[ax_u]} (m)")
         a.set_ylabel(f"{names[ax_v]} (m)")
+    def draw_scenery(ax, highlight=-1):
+        for j, poly in enumerate(scenery):
+            ax.add_patch(plt.Polygon(poly[:, [ax_u, ax_v]], closed=True, facecolor="#9c8f6a", alpha=0.35,
+                                     edgecolor="red" if j == highlight else "#5a5035",
+                                     lw=2.0 if j == highlight else 0.6))
+
+    draw_scenery(ax_all)
     bodies = EllipseCollection(2 * radius, 2 * radius, np.zeros(len(radius)), units="xy",
                                offsets=pos[0][:, [ax_u, ax_v]], transOffset=ax_all.transData,
                                facecolors="0.6", edgecolors="none", alpha=0.5)
@@ -246,9 +275,10 @@ def animate(args):
             ax_zoom.set_title("no missed contact in this window", fontsize=9)
             return
         e = int(np.argmin(np.minimum(abs(ev_enter - t), abs(ev_exit - t))))
-        pair = (ev_a[e], ev_b[e])
+        pair = (ev_a[e], ev_b[e]) if ev_b[e] >= 0 else (ev_a[e],)
+        draw_scenery(ax_zoom, ev_polygon[e])
         centre = ev_where[e][[ax_u, ax_v]]
-        half = 4 * max(radius[pair[0]], radius[pair[1]])
+        half = 4 * max(radius[p] for p in pair)
         speed = max(np.linalg.norm(pos[-1, p] - pos[0, p]) for p in pair) / max(t1 - t0, 1e-300)
         half = max(half, 1.2 * speed * dt)
         ax_zoom.set_xlim(centre[0] - half, centre[0] + half)
@@ -265,7 +295,9 @@ def animate(args):
             ax_zoom.add_patch(Circle(pos[k, p, [ax_u, ax_v]], radius[p], color="red" if touching else colour,
                                      alpha=0.7))
         ax_zoom.plot(*centre, marker="*", color="red", markersize=14)
-        ax_zoom.set_title(f"bodies {pair[0]} and {pair[1]}: in contact {ev_enter[e]:.4f}-{ev_exit[e]:.4f} s;\n"
+        who = (f"bodies {pair[0]} and {pair[1]}" if len(pair) == 2 else
+               f"body {pair[0]} and scenery polygon {ev_polygon[e]}")
+        ax_zoom.set_title(f"{who}: in contact {ev_enter[e]:.4f}-{ev_exit[e]:.4f} s;\n"
                           f"dashed: where the method saw them (every {dt:.4g} s)", fontsize=9)
 
     def frame(k):
@@ -274,7 +306,9 @@ def animate(args):
         colours = np.full(len(radius), "0.6", dtype=object)
         active = (ev_enter <= t) & (ev_exit >= t)
         for a, b in zip(ev_a[active], ev_b[active]):
-            colours[a] = colours[b] = "red"
+            colours[a] = "red"
+            if b >= 0:
+                colours[b] = "red"
         bodies.set_facecolors(list(colours))
         seen = ev_enter <= t
         marks.set_offsets(ev_where[seen][:, [ax_u, ax_v]] if seen.any() else np.zeros((0, 2)))

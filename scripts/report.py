@@ -4,8 +4,11 @@
 usage: /usr/bin/python3 scripts/report.py RESULTS.json... -o DIR [--title TEXT]
 
 Writes into DIR:
-  report.md     per method: the zero-miss frontier (largest dt at and below which the
-                method missed nothing), the missed fraction per dt and the cost; with
+  report.md     the contacts to detect (body-body and body-scenery); per method: the
+                zero-miss frontier (largest dt at and below which the method missed
+                nothing, of either kind), the cheapest zero-miss cost at or below it
+                (the rule of the summary `ccdlab run` prints), the missed contacts per
+                dt ("311 of 1535 (20.3 %)") and the cost; with
                 several files, one table over all of them; the charts as PNG files beside it
   report.html   the same, self-contained (charts embedded as data: URIs, no script, no
                 server): it opens in any browser
@@ -39,6 +42,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 FIELDS = {"method": str, "dt": float, "missed": int, "missed_fraction": float, "events": int,
           "initial_contacts": int, "seconds_per_simulated_second": float, "continuous": bool,
           "false_positives_per_step": float}
+# Counts a record may lack (a results file of a scene without scenery, before `undecided`):
+# read as 0, as the results reader does.
+OPTIONAL_COUNTS = ("undecided", "static_events", "static_initial_contacts", "static_undecided", "static_missed")
 STYLES = ["-", "--", ":", "-."]
 MARKERS = "osD^v<>pP*Xh"
 
@@ -74,9 +80,34 @@ def load(path):
             if kind is float and v != 0 and not DRAWABLE[0] <= v <= DRAWABLE[1]:
                 raise BadInput(f"{name}: records[{i}].{k}: {v:g} is outside [1e-300, 1e300], beyond what a chart "
                                "can draw")
+        for k in OPTIONAL_COUNTS:
+            v = r.get(k, 0)
+            if not isinstance(v, int) or isinstance(v, bool) or v < 0:
+                raise BadInput(f"{name}: records[{i}].{k}: not an int >= 0")
         if r["dt"] <= 0:
             raise BadInput(f"{name}: records[{i}].dt: must be > 0")
+        count_contacts(r)
     return res
+
+
+def count_contacts(r):
+    """Adds to a record its contacts, body-body and body-scenery together (the rule of
+    experiments/record_contacts.hpp): contacts_body and contacts_scenery to detect (the
+    events less those in progress at t = 0 and those the truth could not decide),
+    contacts_missed, contacts_to_detect and contacts_missed_fraction."""
+    r["contacts_body"] = max(0, r["events"] - r["initial_contacts"] - r.get("undecided", 0))
+    r["contacts_scenery"] = max(0, r.get("static_events", 0) - r.get("static_initial_contacts", 0)
+                                - r.get("static_undecided", 0))
+    r["contacts_to_detect"] = r["contacts_body"] + r["contacts_scenery"]
+    r["contacts_missed"] = r["missed"] + r.get("static_missed", 0)
+    r["contacts_missed_fraction"] = r["contacts_missed"] / r["contacts_to_detect"] if r["contacts_to_detect"] else 0.0
+
+
+def rate(r):
+    """"311 of 1535 (20.3 %)", or "0 of 1535"."""
+    if r["contacts_missed"] == 0:
+        return f"0 of {r['contacts_to_detect']}"
+    return f"{r['contacts_missed']} of {r['contacts_to_detect']} ({fmt(r['contacts_missed_fraction'], pct=True)})"
 
 
 def load_all(paths):
@@ -108,29 +139,33 @@ def label_of(path, res, all_paths):
 
 
 def frontier(runs):
-    """The largest dt such that the method missed nothing at it and at every smaller dt run;
-    None when it missed something at the smallest dt."""
-    best = None
+    """The largest dt such that the method missed nothing (body-body or body-scenery) at it
+    and at every smaller dt run, and the cheapest run at or below it; (None, None) when it
+    missed something at the smallest dt. The summary of `ccdlab run` uses the same rule."""
+    best = cheapest = None
     for r in runs:  # ascending dt
-        if r["missed"] != 0:
+        if r["contacts_missed"] != 0:
             break
         best = r
-    return best
+        if cheapest is None or r["seconds_per_simulated_second"] < cheapest["seconds_per_simulated_second"]:
+            cheapest = r
+    return best, cheapest
 
 
 def summary_rows(files):
     rows = []
     for label, res in files:
         for method, runs in by_method(res["records"]).items():
-            f = frontier(runs)
+            f, cheap = frontier(runs)
             worst = runs[-1]
             rows.append({
                 "file": label, "method": method,
                 "kind": "continuous" if runs[0]["continuous"] else "discrete",
                 "frontier": f["dt"] if f else None,
-                "frontier_cost": f["seconds_per_simulated_second"] if f else None,
+                "cheapest_cost": cheap["seconds_per_simulated_second"] if cheap else None,
+                "cheapest_dt": cheap["dt"] if cheap else None,
                 "all_zero": f is worst,
-                "largest_dt": worst["dt"], "missed_at_largest": worst["missed_fraction"],
+                "largest_dt": worst["dt"], "missed_at_largest": rate(worst),
                 "cost_at_largest": worst["seconds_per_simulated_second"],
             })
     return rows
@@ -139,6 +174,8 @@ def summary_rows(files):
 def fmt(x, pct=False):
     if x is None:
         return "none"
+    if isinstance(x, str):
+        return x
     if pct:
         return f"{100 * x:.3g} %"
     return f"{x:.3g}"
@@ -200,7 +237,7 @@ def verdict(files):
     missed a contact at any dt, else the methods that missed nothing at every dt."""
     records = [r for _, res in files for r in res["records"]]
     methods = sorted({r["method"] for r in records})
-    clean = [m for m in methods if all(r["missed"] == 0 for r in records if r["method"] == m)]
+    clean = [m for m in methods if all(r["contacts_missed"] == 0 for r in records if r["method"] == m)]
     fp = ("; and no method had a false positive" if all(r["false_positives_per_step"] == 0 for r in records)
           else "")
     if len(clean) == len(methods):
@@ -220,8 +257,14 @@ def file_notes(files):
         parts = [f"[{i + 1}] {label}:"]
         if "bodies" in scene:
             parts.append(shown(f"{scene['bodies']} bodies, horizon {scene.get('horizon')} s"))
+        first = res["records"][0]
+        scenery = (f" ({first['contacts_body']} body-body, {first['contacts_scenery']} body-scenery)"
+                   if first.get("static_events", 0) else "")
+        parts.append(f"{first['contacts_to_detect']} contacts to detect{scenery}")
         if "events" in truth:
-            parts.append(shown(f"{truth['events']} ground-truth events"))
+            parts.append(shown(f"{truth['events']} ground-truth body-body events"))
+            if truth.get("static_events"):
+                parts.append(shown(f"{truth['static_events']} body-scenery events"))
         if env.get("cpu"):
             parts.append(shown(f"on {env['cpu']}"))
         lines.append(parts[0] + " " + ", ".join(parts[1:]))
@@ -237,33 +280,38 @@ def write_report(paths, out_dir, title):
     rows = summary_rows(files)
     several = len(files) > 1
     charts = {
-        "missed": chart(files, "missed_fraction", "missed fraction", "Missed contacts against dt", "symlog",
+        "missed": chart(files, "contacts_missed_fraction", "missed fraction", "Missed contacts against dt", "symlog",
                         "nothing was missed at any dt"),
         "cost": chart(files, "seconds_per_simulated_second", "seconds per simulated second",
                       "Cost against dt", "log", "every cost is 0"),
     }
 
-    head = (["file"] if several else []) + ["method", "kind", "zero-miss frontier dt (s)",
-                                            "cost there (s/s)", "largest dt (s)", "missed at largest dt",
-                                            "cost at largest dt (s/s)"]
+    head = (["file"] if several else []) + ["method", "kind", "zero-miss frontier dt (s)", "frontier (Hz)",
+                                            "cheapest zero-miss cost (s/s)", "at dt (s)", "at (Hz)",
+                                            "largest dt (s)", "missed at largest dt", "cost at largest dt (s/s)"]
+
+    def hz(dt):
+        return "none" if dt is None else f"{1 / dt:.4g}"
 
     def cells(r):
         frontier_text = fmt(r["frontier"]) + (" (every dt)" if r["all_zero"] else "")
         return (([r["file"]] if several else []) +
-                [shown(r["method"]), r["kind"], frontier_text, fmt(r["frontier_cost"]), fmt(r["largest_dt"]),
-                 fmt(r["missed_at_largest"], pct=True), fmt(r["cost_at_largest"])])
+                [shown(r["method"]), r["kind"], frontier_text, hz(r["frontier"]), fmt(r["cheapest_cost"]),
+                 fmt(r["cheapest_dt"]), hz(r["cheapest_dt"]), fmt(r["largest_dt"]), r["missed_at_largest"],
+                 fmt(r["cost_at_largest"])])
 
-    per_dt = []  # one table per file: missed fraction per (method, dt)
+    per_dt = []  # one table per file: missed contacts per (method, dt)
     for label, res in files:
         dts = sorted({r["dt"] for r in res["records"]}, reverse=True)
-        table = {shown(m): {r["dt"]: r["missed_fraction"] for r in runs}
+        table = {shown(m): {r["dt"]: rate(r) if r["contacts_missed"] else "0" for r in runs}
                  for m, runs in by_method(res["records"]).items()}
         per_dt.append((label, dts, table))
 
     text = {"title": shown(title), "verdict": verdict(files), "notes": file_notes(files),
-            "explain": ("The zero-miss frontier of a method is the largest timestep at which it missed no "
-                        "contact, at that timestep and at every smaller one run; cost is the run's seconds per "
-                        "simulated second."),
+            "explain": ("Contacts are body-body and body-scenery together (those in progress at t = 0 apart). "
+                        "The zero-miss frontier of a method is the largest timestep at which it missed no "
+                        "contact, at that timestep and at every smaller one run; the cheapest zero-miss cost is "
+                        "the least cost at or below it; cost is the run's seconds per simulated second."),
             "head": head, "rows": [cells(r) for r in rows], "per_dt": per_dt}
     outputs = {"report.md": markdown(text).encode("utf-8"), "report.html": page(text, charts).encode("utf-8"),
                "missed.png": charts["missed"], "cost.png": charts["cost"]}
@@ -279,7 +327,7 @@ def markdown(t):
     md += ["| " + " | ".join(row) + " |" for row in t["rows"]]
     md += ["", "![missed fraction against dt](missed.png)", "", "![cost against dt](cost.png)", ""]
     for label, dts, table in t["per_dt"]:
-        md += [f"## Missed fraction per dt: {label}", "",
+        md += [f"## Missed contacts per dt (s): {label}", "",
                "| method | " + " | ".join(f"{d:.3g}" for d in dts) + " |", "|---|" + "---|" * len(dts)]
         for m, by_dt in table.items():
             md.append(f"| {m} | " + " | ".join(fmt(by_dt.get(d), pct=True) if d in by_dt else "" for d in dts) + " |")
@@ -315,7 +363,7 @@ def page(t, charts):
     h.append(table_html(t["head"], t["rows"]))
     h += [img("missed", "missed fraction against dt"), img("cost", "cost against dt")]
     for label, dts, table in t["per_dt"]:
-        h.append(f"<h2>Missed fraction per dt: {html.escape(label)}</h2>")
+        h.append(f"<h2>Missed contacts per dt (s): {html.escape(label)}</h2>")
         h.append(table_html(["method"] + [f"{d:.3g}" for d in dts],
                             [[m] + [fmt(by_dt[d], pct=True) if d in by_dt else "" for d in dts]
                              for m, by_dt in table.items()]))

@@ -20,12 +20,13 @@
   const ROT = 9;        // numbers per rotation piece
   const HIGHLIGHT = 0xff0000;
   const HIGHLIGHT_SECOND = 0xd00000;
+  const SCENERY = 0x9c8f6a;  // static scenery (floors, ramps, meshes): opaque, unlit
   const el = (id) => document.getElementById(id);
   const data = JSON.parse(el('ccdlab-data').textContent);
   const body = document.body;
 
   const state = {
-    t: 0, playing: false, speed: 1, run: null, pair: null, missedIndex: -1, dirty: true,
+    t: 0, playing: false, speed: 1, run: null, pair: null, polygon: null, missedIndex: -1, dirty: true,
     fragmentReady: false,
   };
 
@@ -50,7 +51,7 @@
       parts.push('dt=' + formatNumber(state.run.dt));
     }
     parts.push('t=' + formatNumber(state.t));
-    if (state.pair) parts.push('pair=' + state.pair[0] + '-' + state.pair[1]);
+    if (state.pair && state.pair.length === 2) parts.push('pair=' + state.pair[0] + '-' + state.pair[1]);
     try {
       window.history.replaceState(null, '', '#' + parts.join('&'));
     } catch (e) { /* some browsers refuse replaceState on file:// URLs: the view still works */ }
@@ -274,6 +275,23 @@
   const methods = [];
   for (const r of runs) if (methods.indexOf(r.method) < 0) methods.push(r.method);
 
+  // A run's missed contacts, body-body ({a, b}) and body-scenery ({a: body, polygon}), in
+  // order of entry; null when the results list none (run without --list-missed).
+  function missedOf(run) {
+    if (!run || (run.missed_events === undefined && run.static_missed_events === undefined)) return null;
+    if (!run.missedList) {
+      const list = (run.missed_events || []).map((m) => ({ a: m.a, b: m.b, polygon: null, enter: m.enter, exit: m.exit }));
+      for (const m of run.static_missed_events || [])
+        list.push({ a: m.body, b: null, polygon: m.polygon, enter: m.enter, exit: m.exit });
+      list.sort((x, y) => x.enter - y.enter);  // stable: each kind keeps its order
+      run.missedList = list;
+    }
+    return run.missedList;
+  }
+
+  // Missed contacts of a run, body-body and body-scenery together.
+  function missedCount(run) { return (run.missed || 0) + (run.static_missed || 0); }
+
   function runsOf(method) {
     return runs.filter((r) => r.method === method).sort((a, b) => a.dt - b.dt);
   }
@@ -304,7 +322,7 @@
       }
     } else {
       // By default the largest dt with a miss (the interesting one), else the largest dt.
-      const missing = list.filter((r) => (r.missed || 0) > 0);
+      const missing = list.filter((r) => missedCount(r) > 0);
       if (missing.length) best = missing[missing.length - 1];
     }
     state.run = best;
@@ -314,11 +332,16 @@
     for (const r of list) ds.add(new Option((r.hz ? r.dt.toPrecision(6) + ' s (' + Number(r.hz.toPrecision(6)) + ' Hz)' : r.dt.toPrecision(6) + ' s'), String(r.dt)));
     ds.value = String(best.dt);
     const r = best;
+    // Contacts to detect: the events less those in progress at t = 0 and the undecided ones.
+    const body = (r.events || 0) - (r.initial_contacts || 0) - (r.undecided || 0);
+    const scenery = (r.static_events || 0) - (r.static_initial_contacts || 0) - (r.static_undecided || 0);
+    const kinds = r.static_events ? ' (' + (r.missed || 0) + ' of ' + body + ' body-body, ' + (r.static_missed || 0) +
+      ' of ' + scenery + ' body-scenery)' : '';
     el('run-info').textContent = r.method + ' at dt = ' + formatNumber(r.dt) + ' s: ' +
       (r.continuous ? 'continuous' : 'discrete') + (r.conservative ? ', conservative' : '') + '; ' +
-      (r.missed !== undefined ? r.missed + ' missed of ' + (r.events - (r.initial_contacts || 0)) + ' contacts' : '') +
+      (r.missed !== undefined ? missedCount(r) + ' missed of ' + (body + scenery) + ' contacts' + kinds : '') +
       (r.false_positives !== undefined ? ', ' + r.false_positives + ' false positives' : '') +
-      (r.missed_events === undefined && r.missed > 0 ? ' (the results list no missed contacts: run with --list-missed)' : '');
+      (missedOf(r) === null && missedCount(r) > 0 ? ' (the results list no missed contacts: run with --list-missed)' : '');
     fillMissedTable(r);
     if (byUser) { state.pair = null; state.missedIndex = -1; }
     state.dirty = true;
@@ -329,17 +352,17 @@
   function fillMissedTable(run) {
     const tbody = el('missed').tBodies[0];
     tbody.innerHTML = '';
-    const list = run.missed_events || [];
+    const list = missedOf(run) || [];
     el('missed-count').textContent = '(' + list.length + ')';
     list.forEach((m, index) => {
       const tr = document.createElement('tr');
       tr.setAttribute('data-missed', '');
       tr.dataset.a = m.a;
-      tr.dataset.b = m.b;
+      if (m.polygon === null) tr.dataset.b = m.b; else tr.dataset.polygon = m.polygon;
       tr.dataset.enter = m.enter;
       tr.dataset.exit = m.exit;
       tr.dataset.index = index;
-      for (const x of [m.a, m.b, m.enter.toPrecision(7), m.exit.toPrecision(7)]) {
+      for (const x of [m.a, m.polygon === null ? m.b : 'scenery ' + m.polygon, m.enter.toPrecision(7), m.exit.toPrecision(7)]) {
         const td = document.createElement('td');
         td.textContent = x;
         tr.appendChild(td);
@@ -350,20 +373,21 @@
   }
 
   function jumpToMissed(index) {
-    const list = (state.run && state.run.missed_events) || [];
+    const list = missedOf(state.run) || [];
     if (!list.length) return;
     index = ((index % list.length) + list.length) % list.length;
     const m = list[index];
     state.missedIndex = index;
     state.playing = false;
-    setPair([m.a, m.b], true);
+    state.polygon = m.polygon;
+    setPair(m.polygon === null ? [m.a, m.b] : [m.a], true);
     setTime(0.5 * (m.enter + m.exit));
   }
 
   function markSelectedRow() {
     for (const tr of el('missed').tBodies[0].rows) {
-      const on = state.pair && Number(tr.dataset.a) === state.pair[0] && Number(tr.dataset.b) === state.pair[1] &&
-        Number(tr.dataset.index) === state.missedIndex;
+      const on = state.pair && Number(tr.dataset.a) === state.pair[0] && Number(tr.dataset.index) === state.missedIndex &&
+        (state.pair.length === 1 ? Number(tr.dataset.polygon) === state.polygon : Number(tr.dataset.b) === state.pair[1]);
       tr.classList.toggle('selected', !!on);
       if (on) {  // scroll the table only, not the page
         const wrap = el('missed-wrap');
@@ -385,9 +409,9 @@
       g.fillStyle = '#999';
       for (let t = 0; t <= T + 1e-12; t += state.run.dt) g.fillRect(Math.round(t / T * (w - 1)), 8, 1, 6);
     }
-    if (state.run && state.run.missed_events) {
+    if (missedOf(state.run)) {
       g.fillStyle = '#d00';
-      for (const m of state.run.missed_events) {
+      for (const m of missedOf(state.run)) {
         const x0 = m.enter / T * (w - 1), x1 = m.exit / T * (w - 1);
         g.fillRect(Math.floor(x0), 0, Math.max(2, x1 - x0), 7);
       }
@@ -489,6 +513,53 @@
     lines.position.copy(min).add(max).multiplyScalar(0.5);
     scene3.add(lines);
     layers.walls = lines;
+  }
+
+  // Triangle fans of the polygons (flat vertex arrays) as one geometry.
+  function polygonGeometry(polygons) {
+    const coords = [];
+    for (const f of polygons)
+      for (let k = 1; k + 1 < f.length / 3; ++k)
+        for (const v of [0, k, k + 1]) coords.push(f[3 * v], f[3 * v + 1], f[3 * v + 2]);
+    const geo = new THREE.BufferGeometry();
+    geo.setAttribute('position', new THREE.BufferAttribute(new Float32Array(coords), 3));
+    return geo;
+  }
+
+  // The static scenery, opaque with dark edges; returns each polygon's plane {n, d}
+  // (n . x = d, n from Newell's formula) for the truth's body-scenery contacts.
+  function addScenery(polygons) {
+    const planes = polygons.map((f) => {
+      const n = new THREE.Vector3(), c = new THREE.Vector3();
+      const m = f.length / 3;
+      for (let k = 0; k < m; ++k) {
+        const a = 3 * k, b = 3 * ((k + 1) % m);
+        n.x += (f[a + 1] - f[b + 1]) * (f[a + 2] + f[b + 2]);
+        n.y += (f[a + 2] - f[b + 2]) * (f[a] + f[b]);
+        n.z += (f[a] - f[b]) * (f[a + 1] + f[b + 1]);
+        c.x += f[a] / m; c.y += f[a + 1] / m; c.z += f[a + 2] / m;
+      }
+      n.normalize();
+      return { n: n, d: n.dot(c) };
+    });
+    if (!polygons.length) return planes;
+    const group = new THREE.Group();
+    const geo = polygonGeometry(polygons);
+    const mesh = new THREE.Mesh(geo, new THREE.MeshBasicMaterial({ color: SCENERY, side: THREE.DoubleSide,
+      polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 }));
+    group.add(mesh);
+    const edges = [];
+    for (const f of polygons) {
+      const m = f.length / 3;
+      for (let k = 0; k < m; ++k)
+        for (const v of [k, (k + 1) % m]) edges.push(f[3 * v], f[3 * v + 1], f[3 * v + 2]);
+    }
+    const edgeGeo = new THREE.BufferGeometry();
+    edgeGeo.setAttribute('position', new THREE.BufferAttribute(new Float32Array(edges), 3));
+    group.add(new THREE.LineSegments(edgeGeo, new THREE.LineBasicMaterial({ color: 0x5a5035 })));
+    scene3.add(group);
+    layers.scenery = group;
+    return planes;
   }
 
   // A growable set of instanced meshes of one geometry (translucent bounds, ghosts).
@@ -661,8 +732,24 @@
       pairBox: new InstancePool(boxGeo, pairBoundMaterial, 16), pairSphere: new InstancePool(unitSphere, pairBoundMaterial, 16),
       pairCyl: new InstancePool(cylGeo, pairBoundMaterial, 16),
     };
-    // The truth's contacts at t: a line between the centres.
+    // The truth's contacts at t: a line between the centres (body-body), from the centre to
+    // the polygon's plane (body-scenery).
     const truth = data.truth || [];
+    const staticTruth = data.static_truth || [];
+    const plane = addScenery(data.scenery || []);
+    const hiPolygonMaterial = new THREE.MeshBasicMaterial({ color: HIGHLIGHT, side: THREE.DoubleSide, depthTest: false,
+      transparent: true, opacity: 0.6 });
+    let hiPolygon = null, hiPolygonIndex = null;
+    // The highlighted scenery polygon (a missed body-scenery contact), or none.
+    function sceneryHighlight(j) {
+      if (j === hiPolygonIndex) return;
+      if (hiPolygon) { scene3.remove(hiPolygon); hiPolygon.geometry.dispose(); hiPolygon = null; }
+      hiPolygonIndex = j;
+      if (j === null || !data.scenery[j]) return;
+      hiPolygon = new THREE.Mesh(polygonGeometry([data.scenery[j]]), hiPolygonMaterial);
+      hiPolygon.renderOrder = 9;
+      scene3.add(hiPolygon);
+    }
     const contactGeo = new THREE.BufferGeometry();
     let contactCapacity = 0;
     const contactLines = new THREE.LineSegments(contactGeo, new THREE.LineBasicMaterial({ color: 0x109030 }));
@@ -720,7 +807,7 @@
       const step = run ? stepAt(run, t) : null;
       const kind = run ? boundKind(run) : null;
       for (let k = 0; k < 2; ++k) {
-        const i = pair ? pair[k] : -1;
+        const i = pair && k < pair.length ? pair[k] : -1;
         highlight[k].visible = i >= 0;
         ghosts[k].visible = false;
         if (i < 0) continue;
@@ -751,10 +838,16 @@
           }
         }
         pathGeo.attributes.position.needsUpdate = true;
+        pathGeo.setDrawRange(0, c / 3);  // one body's path for a body-scenery contact
       }
       for (const p of Object.values(pools)) p.begin();
       let pairText = '';
-      if (run && pair && el('show-bounds').checked) {
+      if (run && pair && pair.length === 1 && el('show-bounds').checked) {
+        const va = [];
+        boundVolumes(motion, run, kind, pair[0], step, va);
+        for (const v of va) pushVolume(v, pools.pairBox, pools.pairSphere, pools.pairCyl);
+        pairText = 'its bounds over the step [' + formatNumber(step.t0) + ', ' + formatNumber(step.t1) + ']';
+      } else if (run && pair && el('show-bounds').checked) {
         const va = [], vb = [];
         boundVolumes(motion, run, kind, pair[0], step, va);
         boundVolumes(motion, run, kind, pair[1], step, vb);
@@ -769,7 +862,16 @@
         for (const v of vs) pushVolume(v, pools.box, pools.sphere, pools.cyl);
       }
       for (const p of Object.values(pools)) p.end(true);
-      if (pair) {
+      sceneryHighlight(state.polygon !== null && pair && pair.length === 1 ? state.polygon : null);
+      if (pair && pair.length === 1) {
+        // A body and a scenery polygon: the body's distance to the polygon's plane less its radius.
+        const i = pair[0], j = state.polygon;
+        const c = motion.position(i, t, new THREE.Vector3());
+        const gap = j !== null && plane[j] ? Math.abs(plane[j].n.dot(c) - plane[j].d) - motion.radius[i] : NaN;
+        body.dataset.pairGap = String(gap);
+        el('pair-info').textContent = 'body ' + i + ' and scenery polygon ' + j + ': distance to its plane - radius = ' +
+          gap.toPrecision(4) + (motion.shape[i] >= 0 ? ' (enclosing ball)' : '') + (pairText ? '; ' + pairText : '');
+      } else if (pair) {
         const a = motion.position(pair[0], t, new THREE.Vector3()), b = motion.position(pair[1], t, new THREE.Vector3());
         const gap = a.distanceTo(b) - motion.radius[pair[0]] - motion.radius[pair[1]];
         body.dataset.pairGap = String(gap);
@@ -799,8 +901,10 @@
       const showTruth = el('show-truth').checked;
       const active = [];
       if (showTruth) for (const e of truth) if (e[2] <= t && t <= e[3]) active.push(e);
-      if (2 * active.length > contactCapacity) {
-        contactCapacity = Math.max(64, 4 * active.length);
+      const activeStatic = [];
+      if (showTruth) for (const e of staticTruth) if (e[2] <= t && t <= e[3]) activeStatic.push(e);
+      if (2 * (active.length + activeStatic.length) > contactCapacity) {
+        contactCapacity = Math.max(64, 4 * (active.length + activeStatic.length));
         contactGeo.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * contactCapacity), 3));
       }
       if (contactCapacity) {
@@ -811,12 +915,20 @@
             arr[3 * c] = pos.x; arr[3 * c + 1] = pos.y; arr[3 * c + 2] = pos.z; ++c;
           }
         }
+        for (const e of activeStatic) {  // the body's centre to the nearest point of the polygon's plane
+          motion.position(e[0], t, pos);
+          arr[3 * c] = pos.x; arr[3 * c + 1] = pos.y; arr[3 * c + 2] = pos.z; ++c;
+          const q = plane[e[1]];
+          pos.addScaledVector(q.n, q.d - q.n.dot(pos));
+          arr[3 * c] = pos.x; arr[3 * c + 1] = pos.y; arr[3 * c + 2] = pos.z; ++c;
+        }
         contactGeo.attributes.position.needsUpdate = true;
         contactGeo.setDrawRange(0, c);
       }
       contactLines.visible = showTruth && c > 0;
       if (layers.walls) layers.walls.visible = el('show-box').checked;
-      body.dataset.contacts = String(active.length);
+      if (layers.scenery) layers.scenery.visible = el('show-scenery').checked;
+      body.dataset.contacts = String(active.length + activeStatic.length);
     };
 
     // Initial view: the walls, else the bodies at t = 0.
@@ -830,11 +942,15 @@
         min.min(pos.clone().addScalar(-motion.radius[i]));
         max.max(pos.clone().addScalar(motion.radius[i]));
       }
-      if (n) frameView(min, max);
+      const sc = data.scenery || [];
+      for (const f of sc)
+        for (let k = 0; k < f.length; k += 3) { min.min(pos.fromArray(f, k)); max.max(pos); }
+      if (n || sc.length) frameView(min, max);
     }
     el('legend').innerHTML = '<span style="background:#6d8fb3"></span>bodies <span style="background:#f00"></span>highlighted pair' +
       ' <span style="background:#d03030;opacity:0.5"></span>its bounds <span style="background:#e8a020"></span>bounds' +
-      ' <span style="background:#109030"></span>truth contact';
+      ' <span style="background:#109030"></span>truth contact' +
+      ((data.scenery || []).length ? ' <span style="background:#9c8f6a"></span>scenery' : '');
   }
 
   function makeCloth3D() {
@@ -938,7 +1054,9 @@
     el('info').textContent = data.kind === 'cloth'
       ? 'cloth frames ' + data.scene_file + ', ' + data.frames.length + ' frames over ' + formatNumber(data.horizon) + ' s'
       : data.scene_file + ': ' + data.bodies.count + ' bodies over ' + formatNumber(data.horizon) + ' s' +
-        (data.truth ? ', ' + data.truth.length + ' truth contacts' : ', no truth given (--truth)') +
+        ((data.scenery || []).length ? ', ' + data.scenery.length + ' scenery polygons' : '') +
+        (data.truth ? ', ' + data.truth.length + ' body-body' + (data.static_truth && data.static_truth.length
+          ? ' and ' + data.static_truth.length + ' body-scenery' : '') + ' truth contacts' : ', no truth given (--truth)') +
         (data.results_file ? ', results ' + data.results_file : '');
     body.dataset.bodies = String(data.kind === 'cloth' ? 0 : data.bodies.count);
     fillRunControls();
@@ -953,12 +1071,12 @@
     if (f.pair && data.kind === 'bodies') {
       const ab = f.pair.split('-').map(Number);
       if (ab.length === 2 && ab.every((x) => Number.isInteger(x) && x >= 0 && x < data.bodies.count)) {
-        const list = (state.run && state.run.missed_events) || [];
+        const list = missedOf(state.run) || [];
         state.missedIndex = list.findIndex((m) => m.a === ab[0] && m.b === ab[1] && m.enter <= state.t && state.t <= m.exit);
         setPair(ab, true);
       }
     }
-    for (const id of ['show-bounds', 'show-all-bounds', 'show-samples', 'show-truth', 'show-box'])
+    for (const id of ['show-bounds', 'show-all-bounds', 'show-samples', 'show-truth', 'show-box', 'show-scenery'])
       el(id).addEventListener('change', () => { state.dirty = true; });
     if (data.kind === 'bodies' && data.bodies.count > 2000) el('show-all-bounds').checked = false;
     if (f.bounds === 'all' || f.bounds === 'pair' || f.bounds === 'none') {

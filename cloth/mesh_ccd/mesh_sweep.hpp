@@ -1,10 +1,22 @@
 #pragma once
 // `mesh_sweep`: a broad phase made for the CCD of one mesh between two frames (every
-// vertex moving linearly from x0 to x1). One sort and sweep along the axis of largest
-// variance of the vertices' box centres (ccd/broad_phase/variance_axis.hpp): vertex boxes
-// against face boxes (a bipartite sweep: the vertex-face candidates) and edge boxes
-// against edge boxes (the edge-edge candidates). There are no vertex-vertex,
-// face-face or vertex-edge box tests, no quadratic step, and nothing is allocated per pair.
+// vertex moving linearly from x0 to x1). A sort and sweep along the axis of largest
+// variance of the vertices' box centres, cut into slabs along the axis of second-largest
+// variance (a two-level sweep): vertex boxes against face boxes (a bipartite sweep: the
+// vertex-face candidates) and edge boxes against edge boxes (the edge-edge candidates).
+// There are no vertex-vertex, face-face or vertex-edge box tests, no quadratic step, and
+// nothing is allocated per pair.
+//
+// Slabs. A one-level sweep of a sheet is O(n^1.5): along the sweep axis a box's interval
+// overlaps the starts of a whole column of the sheet. So the slab axis is cut into S slabs
+// of equal width w (S <= 2^16 and <= the vertex count); slab(x) = clamp(floor((x - origin)
+// / w), 0, S - 1) is monotone in x, as computed. The sweep axis, the slab axis and w are
+// chosen by the estimated cost of the edge-edge sweep on a sample of edges (mesh_sweep.cpp,
+// choose_layout); only the speed depends on them. A box goes into every slab from slab(lo) to slab(hi) of its slab-axis
+// interval; each slab is swept on its own, in the same (start, index) order. Two boxes that
+// overlap share slab(max of their two lows) = max of their first slabs, and the pair is
+// reported in that slab only: each pair exactly once, whatever the layout (one slab, boxes
+// on slab boundaries, any width).
 //
 // Boxes. A vertex's box holds its path over [0, 1] widened by half the separation, rounded
 // outwards (cloth/cull/primitive_boxes.hpp); a face's or an edge's is the union of its
@@ -19,11 +31,12 @@
 // non-adjacent pairs whose whole boxes overlap (those of `boxes:brute`); with it, those
 // whose boxes also overlap over one half (brute_force() is the same rule pair by pair).
 //
-// Work is cut in chunks of the sorted orders; each chunk's candidates come out in blocks
-// of a buffer the caller owns (streamed: never all held), each candidate in exactly one
-// chunk. The chunks do not depend on the thread count.
+// Work is cut in chunks of the slabs' concatenated orders; each chunk's candidates come out
+// in blocks of a buffer the caller owns (streamed: never all held), each candidate in
+// exactly one chunk. The chunks and slabs do not depend on the thread count.
 #include <cloth/cull/candidate.hpp>
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -35,6 +48,10 @@ struct MeshSweepOptions {
   double separation = 0.0;  ///< minimum separation, m, >= 0, finite
   bool time_halves = true;  ///< also test the boxes over [0, 1/2] and [1/2, 1]
   unsigned threads = 1;     ///< threads building and sorting the boxes (>= 1)
+  /// Slab width: 0 chooses the layout (axes and width) by a sampled cost estimate; > 0 and
+  /// finite: that width, the axes of largest and second-largest variance of the vertex
+  /// boxes' centres; anything else (infinity): one slab.
+  double slab_width = 0.0;
 };
 
 class MeshSweep {
@@ -49,6 +66,11 @@ class MeshSweep {
                const MeshSweepOptions& options);
   /// Chunks of work of the prepared sweep.
   std::size_t chunks() const { return face_chunks_ + vertex_chunks_ + edge_chunks_; }
+  /// The slab axis (!= axis()) and the number of slabs (>= 1).
+  int slab_axis() const { return slab_axis_; }
+  std::size_t slabs() const { return slabs_; }
+  /// Boxes placed in slabs (vertices, faces and edges), counting each box once per slab.
+  std::size_t slab_entries() const { return slab_vertices_.size() + slab_faces_.size() + slab_edges_.size(); }
   /// The candidates of chunk k (< chunks()), passed to `sink` in blocks of at most
   /// buffer.size() (>= 1): each full block, then the rest. Safe to call concurrently.
   void sweep(std::size_t chunk, std::span<Candidate> buffer, const Sink& sink) const;
@@ -59,11 +81,20 @@ class MeshSweep {
   /// The sweep axis (0, 1, 2).
   int axis() const { return axis_; }
 
-  /// One primitive in sweep order: its box (sweep axis, then the two others), its index
-  /// and vertices (an edge's third is unused; a vertex's are unused).
+  /// One primitive in sweep order: its box (sweep axis, slab axis, the third axis), its
+  /// index and vertices (an edge's third is unused; a vertex's are unused).
   struct Item {
     double lo, hi, lo1, hi1, lo2, hi2;
     std::uint32_t id;
+    std::array<std::uint32_t, 3> v;
+  };
+  /// An item in one slab: the item, its first slab, and its position in the sorted order
+  /// (its half-interval boxes).
+  struct SlabItem {
+    double lo, hi, lo1, hi1, lo2, hi2;
+    std::uint32_t id;
+    std::uint32_t first;
+    std::uint32_t pos;
     std::array<std::uint32_t, 3> v;
   };
   /// The two half-interval boxes of an item, in the same axis order.
@@ -77,7 +108,11 @@ class MeshSweep {
   void sweep_edges(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
   bool halves_overlap(const Halves& a, const Halves& b) const;
 
-  int axis_ = 0;
+  int axis_ = 0, slab_axis_ = 1;
+  std::size_t slabs_ = 1;
+  // Per set: the slabs' items, concatenated (slab s: [offsets[s], offsets[s + 1])).
+  std::vector<SlabItem> slab_vertices_, slab_faces_, slab_edges_;
+  std::vector<std::size_t> vertex_offsets_, face_offsets_, edge_offsets_;
   bool time_halves_ = true;
   std::vector<Item> vertices_, faces_, edges_;  // sorted by (lo, id)
   std::vector<Halves> vertex_halves_, face_halves_, edge_halves_;  // in the same orders

@@ -7,6 +7,7 @@
 #include "../run_cloth_experiment.hpp"
 #include "../prepare_run.hpp"
 #include "../run_experiment.hpp"
+#include "../missed_list.hpp"
 #include "../summary.hpp"
 #include "../work_estimate.hpp"
 
@@ -102,9 +103,9 @@ int run_cloth(const std::string& experiment_path, std::string out_path, int thre
 constexpr const char* kRunDescription =
     "Runs every method of the experiment at every timestep against the scene's exact\n"
     "ground truth and writes a ccdlab-results/2 file (docs/experiments.md). Then prints a\n"
-    "summary (per method: the largest dt with no miss, the cost at the cheapest zero-miss\n"
-    "point, the missed fraction at every dt) and writes it as Markdown beside the results\n"
-    "(RESULTS.summary.md).\n"
+    "summary (the contacts to detect, body-body and body-scenery; per method: the largest\n"
+    "dt with no miss at it and below, the cheapest zero-miss cost, the missed contacts at\n"
+    "every dt) and writes it as Markdown beside the results (RESULTS.summary.md).\n"
     "\n"
     "A cloth experiment runs every culler in the discrete and continuous modes at every\n"
     "check interval k against the exact mesh truth (docs/experiments.md#cloth-experiments).\n";
@@ -123,7 +124,8 @@ struct RunArguments {
 void declare_run_options(CommandLine& cli, RunArguments& a, RunOptions& options) {
   cli.positional("EXPERIMENT.json", a.experiment_path, "the experiment (ccdlab-experiment/1 or ccdlab-cloth-experiment/1)");
   cli.text("-o,--output", a.out_path, "FILE",
-           "results file (default results/NAME.json; '-' = standard output);\n"
+           "results file (default results/NAME.json, relative to the current\n"
+           "directory; '-' = standard output);\n"
            "checked before the run (a regular file, not an input, in a folder\n"
            "that takes a file), written atomically, never partially (Ctrl-C\n"
            "leaves no file); RESULTS.summary.md is checked with it and written\n"
@@ -162,7 +164,10 @@ void declare_run_options(CommandLine& cli, RunArguments& a, RunOptions& options)
            "particle-steps of checks over its jobs (docs/formats.md)");
   cli.flag("--list-missed", a.list_missed,
            "every record lists the contact events it missed (missed_events:\n"
-           "a, b, enter, exit), as the experiment option \"list_missed\": true");
+           "a, b, enter, exit; static_missed_events: body, polygon, enter,\n"
+           "exit), as the experiment option \"list_missed\": true; after the\n"
+           "summary, per method at the largest dt at which it missed a contact,\n"
+           "the missed contacts (at most 20 lines in all, then a count)");
   cli.value(
       "--truth-cache", "DIR",
       "cloth experiments (ccdlab-cloth-experiment/1): where the exact\n"
@@ -255,7 +260,9 @@ int run_run(std::span<const std::string> args) {
     // The answer in one table: on the terminal (stderr when the results go to stdout) and
     // beside the results as Markdown, written together with them.
     commit_with_summary(output, summary, results);
-    (out_path == "-" ? std::cerr : std::cout) << "\n" << summary_text(results) << "\n";
+    std::ostream& terminal = out_path == "-" ? std::cerr : std::cout;
+    terminal << "\n" << summary_text(results) << "\n";
+    if (e.list_missed) terminal << missed_list_text(results) << "\n";  // which contacts, after the table
     if (summary) summary_file = summary->path();
     if (!options.quiet) {
       std::size_t flagged = 0;

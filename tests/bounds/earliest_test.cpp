@@ -16,7 +16,7 @@ using ccd::Vec3;
 
 // Scenes per case: sanitizer builds (about 10x slower) run a third.
 #ifdef CCDLAB_SANITIZED
-constexpr int kReps = 2;
+constexpr int kReps = 1;
 #else
 constexpr int kReps = 6;
 #endif

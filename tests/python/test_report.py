@@ -122,3 +122,44 @@ def test_chromium_renders_the_report(tmp_path, cli, real_results):
     subprocess.run(["/usr/bin/chromium", "--headless", "--no-sandbox", "--disable-gpu", f"--screenshot={shot}",
                     "--window-size=1200,1600", (out / "report.html").as_uri()], capture_output=True, timeout=120)
     assert shot.read_bytes().startswith(b"\x89PNG") and shot.stat().st_size > 20000
+
+
+@pytest.fixture(scope="module")
+def floor_run(tmp_path_factory):
+    """floor_ramp (a floor and ramps) through `ccdlab run`: at 60 Hz aabb/grid misses no
+    body-body contact but floor contacts; the results and the summary beside them."""
+    from conftest import ccdlab_cli
+    folder = tmp_path_factory.mktemp("floor")
+    experiment = write_json(folder / "floor.json", {
+        "format": "ccdlab-experiment/1", "name": "floor", "scene": {"generator": "floor_ramp"},
+        "hz": [60, 120, 240], "methods": ["aabb/grid", "swept_aabb/grid"]})
+    ccdlab_cli("run", experiment, "-o", folder / "r.json", "--quiet", "--threads", "2")
+    return folder / "r.json", (folder / "r.summary.md").read_text()
+
+
+def cells_of(markdown, method):
+    """The cells of every Markdown table row of `method`."""
+    return [[c.strip() for c in line.strip().strip("|").split("|")]
+            for line in markdown.splitlines() if line.startswith(f"| {method} |")]
+
+
+def test_floor_contacts_count_and_the_summary_agrees(tmp_path, cli, floor_run):
+    path, summary = floor_run
+    records = json.loads(path.read_text())["records"]
+    at60 = next(r for r in records if r["method"] == "aabb/grid" and r["hz"] == 60)
+    assert at60["missed"] == 0 and at60["static_missed"] > 0  # the case: only floor contacts missed
+    out = tmp_path / "report"
+    cli("report", path, "-o", out)
+    md = (out / "report.md").read_text()
+    assert "1535 contacts to detect (1023 body-body, 512 body-scenery)" in md
+    report_row = cells_of(md, "aabb/grid")[0]
+    # The frontier is 120 Hz (1/120 s), not 60 Hz; the per-dt table counts the floor misses.
+    assert report_row[2:4] == ["0.00833", "120"]
+    assert cells_of(md, "aabb/grid")[1][1].startswith(f"{at60['static_missed']} of 1535 (")
+    # The summary of `ccdlab run` gives the same frontier and the same cheapest zero-miss point.
+    summary_row = cells_of(summary, "aabb/grid")[0]
+    assert summary_row[1] == report_row[3]          # frontier (Hz)
+    assert summary_row[2] == report_row[4]          # cheapest zero-miss cost (s/s)
+    assert summary_row[3] == report_row[6]          # at (Hz)
+    assert f"{1 / float(report_row[6]):.3g}" == report_row[5]  # the same dt in seconds
+    assert cells_of(summary, "aabb/grid")[1][1].startswith(f"{at60['static_missed']} (")

@@ -7,6 +7,8 @@ rendered.
   method and dt the URL fragment selects (aabb/sap, which misses; capsule/sap and
   horn:4/grid, which miss nothing, with every body's bounds drawn); a screenshot at a
   missed contact is not blank and shows the highlighted pair in red.
+- A floor_ramp scene (a floor and ramps): the table lists the record's body-body and
+  body-scenery misses together in order of entry, and the screenshot shows the scenery.
 - The rigid example scene and the frames of a small cloth run load without error.
 
 Usage: browser_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when no chromium
@@ -123,6 +125,56 @@ def png_pixels(path):
     return w, h, bpp, rows
 
 
+def colour_count(path, width_fraction, colour):
+    """Pixels of the 3D view (the left `width_fraction` of the page) of `colour`, within 6
+    in each channel (an unlit material draws its colour as it is)."""
+    w, h, bpp, rows = png_pixels(path)
+    count = 0
+    for row in rows[: int(h * 0.9)]:
+        for x in range(0, int(w * width_fraction) * bpp, bpp):
+            if all(abs(row[x + k] - colour[k]) <= 6 for k in range(3)):
+                count += 1
+    return count
+
+
+def check_scenery_page(ccdlab, browser, profile, work):
+    """floor_ramp (a floor and ramps): the table lists the body-body and the body-scenery
+    misses of the record together, in order of entry; the scenery is drawn."""
+    scene = os.path.join(work, "floor.json")
+    run([ccdlab, "scene", "floor_ramp", "bodies=100", "-o", scene])
+    experiment = os.path.join(work, "floor-experiment.json")
+    with open(experiment, "w") as f:
+        json.dump({"format": "ccdlab-experiment/1", "name": "floor", "scene": scene, "hz": [30],
+                   "methods": ["aabb/grid"], "list_missed": True}, f)
+    results = os.path.join(work, "floor-results.json")
+    run([ccdlab, "run", experiment, "-o", results, "--quiet"])
+    page = os.path.join(work, "floor.html")
+    run([ccdlab, "view", scene, "--results", results, "-o", page])
+    with open(results) as f:
+        r = json.load(f)["records"][0]
+    if not r["static_missed_events"]:
+        sys.exit("FAIL: aabb/grid at 30 Hz should miss floor contacts of floor_ramp")
+    expected = sorted([(m["a"], m["b"], None, m["enter"], m["exit"]) for m in r["missed_events"]] +
+                      [(m["body"], None, m["polygon"], m["enter"], m["exit"]) for m in r["static_missed_events"]],
+                      key=lambda m: m[3])
+    s0 = r["static_missed_events"][0]
+    url = f"file://{page}#method=aabb/grid&dt={r['dt']!r}&t={0.5 * (s0['enter'] + s0['exit'])!r}"
+    png = os.path.join(work, "floor.png")
+    dom = load(browser, profile, url, png)
+    if dom.body.get("data-status") != "ready":
+        sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
+    shown = [(int(m["data-a"]), int(m["data-b"]) if "data-b" in m else None,
+              int(m["data-polygon"]) if "data-polygon" in m else None, float(m["data-enter"]), float(m["data-exit"]))
+             for m in dom.missed]
+    if shown != expected:
+        sys.exit(f"FAIL: {url}: the table lists {shown[:5]}..., the results file {expected[:5]}...")
+    scenery = colour_count(png, 0.6, (0x9C, 0x8F, 0x6A))
+    print(f"floor_ramp: {len(r['missed_events'])} body-body and {len(r['static_missed_events'])} body-scenery "
+          f"missed contacts in the table, as in the results; {scenery} pixels of scenery")
+    if scenery < 2000:
+        sys.exit(f"FAIL: the screenshot {png} shows no scenery ({scenery} pixels of its colour)")
+
+
 def pixel_counts(path, width_fraction):
     """Pixels of the 3D view (the left `width_fraction` of the page) that differ from its
     background, and of those the pure highlight red."""
@@ -199,6 +251,7 @@ def main():
                   f"pair {m0['a']}-{m0['b']} at t = {t_missed}: gap {gap:.4g} m, {other} drawn pixels, {red} of the pair")
             if other < 5000 or red < 200:
                 sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
+        check_scenery_page(ccdlab, browser, profile, work)
         # The rigid example and a cloth run's frames load and draw.
         rigid = os.path.join(work, "rigid.html")
         run([ccdlab, "view", os.path.join(source, "data", "scenes", "rigid-example.json"), "-o", rigid])

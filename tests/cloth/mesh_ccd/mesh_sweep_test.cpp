@@ -2,7 +2,10 @@
 // returns exactly the non-adjacent pairs whose swept boxes overlap (what boxes:brute
 // returns); with it, exactly the pairs its brute-force reference keeps, a subset, whatever
 // the thread count and the buffer size. Pairs it drops are proved contact-free by the
-// exact reference.
+// exact reference. The two-level layout (slabs along a second axis) is checked the same way
+// on forced layouts: one slab, slabs as wide as the grid's cells (boxes exactly on their
+// boundaries), many thin slabs, frames 2^20 from the origin, a sheet of zero extent on one
+// axis.
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/cull/cullers.hpp>
 #include <cloth/exact/exact_ccd.hpp>
@@ -12,8 +15,57 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <limits>
 
 using namespace ccd::cloth;
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Appends an n x n grid sheet (cells of side h, two triangles each) at `origin` at t = 0,
+// moved by `motion` at t = 1 (dyadic numbers in, exact coordinates out).
+void add_grid(MeshFramePair& m, int n, double h, const ccd::Vec3& origin, const ccd::Vec3& motion) {
+  const auto base = static_cast<std::uint32_t>(m.x0.size());
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const ccd::Vec3 p = origin + ccd::Vec3(i * h, j * h, 0.0);
+      m.x0.push_back(p);
+      m.x1.push_back(p + motion);
+    }
+  auto at = [&](int i, int j) { return base + static_cast<std::uint32_t>(j * n + i); };
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      m.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+// mesh_sweep with and without its half-interval filter, on every slab width and thread
+// count given, against boxes:brute and its own brute-force reference, pair for pair.
+void check_layouts(const MeshFramePair& m, double separation, std::initializer_list<double> widths,
+                   std::size_t* most_slabs = nullptr) {
+  const ClothMesh mesh = mesh_topology(m.faces, m.x0.size());
+  const std::vector<Candidate> boxes = find_culler("boxes:brute")->cull(mesh, m.x0, m.x1, separation);
+  REQUIRE(!boxes.empty());
+  for (const double width : widths)
+    for (const unsigned threads : {1u, 3u, 7u}) {
+      INFO("slab width " << width << ", threads " << threads);
+      MeshSweep plain;
+      plain.prepare(mesh, m.x0, m.x1, {separation, false, threads, width});
+      if (std::isinf(width)) CHECK(plain.slabs() == 1);
+      if (most_slabs) *most_slabs = std::max(*most_slabs, plain.slabs());
+      CHECK(plain.all(threads) == boxes);
+      MeshSweep halves;
+      halves.prepare(mesh, m.x0, m.x1, {separation, true, threads, width});
+      const std::vector<Candidate> got = halves.all(threads);
+      CHECK(got == halves.brute_force());
+      CHECK(std::includes(boxes.begin(), boxes.end(), got.begin(), got.end()));
+    }
+}
+
+}  // namespace
 
 TEST_CASE("mesh_sweep returns the box-overlapping pairs of brute force", "[cloth][mesh_ccd]") {
   std::size_t dropped = 0;
@@ -75,4 +127,39 @@ TEST_CASE("mesh_sweep on chunks larger than one: many primitives, a still mesh",
   MeshSweep s;
   s.prepare(mesh, m.x0, m.x0, {0.01, true, 2});
   CHECK(s.all(2) == find_culler("boxes:sweep")->cull(mesh, m.x0, m.x0, 0.01));
+}
+
+TEST_CASE("mesh_sweep's slabs: any layout gives brute force's pairs", "[cloth][mesh_ccd]") {
+  for (const std::string_view name : mesh_frame_generators())
+    for (const double separation : {0.0, 0.05}) {
+      INFO(name << ", separation " << separation);
+      std::size_t most = 0;
+      // automatic, one slab, a few widths, and 1e-300: the most slabs allowed (one per vertex)
+      check_layouts(generate_mesh_frames(name, 300), separation, {0.0, kInf, 0.25, 0x1p-5, 1e-300}, &most);
+      CHECK(most > 16);
+    }
+}
+
+TEST_CASE("mesh_sweep's slabs: boxes on slab boundaries, far from the origin, zero extent", "[cloth][mesh_ccd]") {
+  const double h = 0x1p-4;
+  for (const double far : {0.0, 0x1p20}) {
+    INFO("offset " << far);
+    const ccd::Vec3 offset(far, far, far);
+    // Two sheets of dyadic coordinates, one falling through the other: with slabs of width
+    // h (or h/2) every slab boundary lies on vertices' coordinates, and the boxes of the
+    // still sheet end exactly on them.
+    MeshFramePair two;
+    add_grid(two, 9, h, offset, ccd::Vec3(0, 0, 0));
+    add_grid(two, 9, h, offset + ccd::Vec3(h / 2, h / 4, h), ccd::Vec3(0, 0, -2 * h));
+    std::size_t most = 0;
+    check_layouts(two, 0.0, {0.0, kInf, h, h / 2, 3 * h}, &most);
+    check_layouts(two, h / 8, {0.0, h}, &most);
+    CHECK(most >= 8);
+    // A flat sheet sliding in its plane: zero extent on z, at both frames.
+    MeshFramePair flat;
+    add_grid(flat, 9, h, offset, ccd::Vec3(h / 2, 0, 0));
+    check_layouts(flat, 0.0, {0.0, kInf, h, 1e-300});
+    // All on one line of slabs: a sheet narrower than one slab of the width asked for.
+    check_layouts(flat, 0.0, {64 * h});
+  }
 }

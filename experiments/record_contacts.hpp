@@ -1,0 +1,36 @@
+#pragma once
+// What one results record counts as contacts, body-body and body-scenery together: the
+// contacts to detect (the truth's events less those in progress at t = 0 and those the
+// truth could not decide) and the missed ones. The summary, the missed list and the report
+// (scripts/report.py, the same rule) read records through these, so a scene with a floor
+// counts its floor contacts. A record without scenery (or a cloth record) reads its
+// static_* fields as 0.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+
+namespace ccdlab {
+
+struct RecordContacts {
+  std::uint64_t body_to_detect = 0;     ///< body-body (or cloth self-contact) events to detect
+  std::uint64_t scenery_to_detect = 0;  ///< body-scenery events to detect
+  std::uint64_t body_missed = 0;
+  std::uint64_t scenery_missed = 0;
+  std::uint64_t to_detect() const { return body_to_detect + scenery_to_detect; }
+  std::uint64_t missed() const { return body_missed + scenery_missed; }
+  /// missed / to_detect, 0 when there is nothing to detect.
+  double missed_fraction() const { return to_detect() ? double(missed()) / double(to_detect()) : 0.0; }
+};
+
+inline RecordContacts record_contacts(const nlohmann::json& r) {
+  auto count = [&](const char* key) { return r.value(key, std::uint64_t{0}); };
+  auto apart = [](std::uint64_t all, std::uint64_t a, std::uint64_t b) { return all >= a + b ? all - a - b : 0; };
+  RecordContacts c;
+  c.body_to_detect = apart(count("events"), count("initial_contacts"), count("undecided"));
+  c.scenery_to_detect = apart(count("static_events"), count("static_initial_contacts"), count("static_undecided"));
+  c.body_missed = count("missed");
+  c.scenery_missed = count("static_missed");
+  return c;
+}
+
+}  // namespace ccdlab
