@@ -1,4 +1,4 @@
-"""Builds the `ccdlab` extension module with the project's CMake, for the interpreter running
+"""Builds the `ccdlab` package (python/ccdlab/ and its compiled `ccdlab._ccdlab`) with the project's CMake, for the interpreter running
 this script (pyproject.toml; docs/python.md, "Installing").
 
 Environment:
@@ -49,9 +49,9 @@ class CMakeBuild(build_ext):
               flush=True)
         subprocess.run(["cmake", "--build", str(build), "--target", "ccdlab_python", "-j", jobs],
                        check=True)
-        built = build / "python" / f"ccdlab{suffix}"
+        built = build / "python" / "ccdlab" / f"_ccdlab{suffix}"
         if not built.exists():
-            found = sorted(p.name for p in (build / "python").glob("ccdlab*.so"))
+            found = sorted(p.name for p in (build / "python" / "ccdlab").glob("_ccdlab*.so"))
             raise RuntimeError(f"{built} not found (the build folder has {found}): "
                                f"was {build} configured for another Python than {sys.executable}?")
         target = pathlib.Path(self.get_ext_fullpath(ext.name))
@@ -61,7 +61,9 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
-    ext_modules=[Extension("ccdlab", sources=[])],
+    packages=["ccdlab"],
+    package_dir={"": "python"},
+    ext_modules=[Extension("ccdlab._ccdlab", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
     zip_safe=False,
 )

@@ -5,6 +5,9 @@
 // static_polygon, static_enter, static_exit (and static_enter_error, static_exit_error,
 // static_grazing, static_undecided when certified) hold the body-scenery events of a scene with scenery.
 #include "bindings.hpp"
+
+#include <algorithm>
+#include <sstream>
 #include "interruptible.hpp"
 
 #include <ccd/scene/scene_digest.hpp>
@@ -96,6 +99,20 @@ PyTruth make_truth(ccd::TruthFile truth) {
   return t;
 }
 
+/// "<ccdlab.Truth 9 events (2 grazing, 1 undecided), 3 static events, horizon 2 s>".
+std::string truth_repr(const ccd::Truth& t) {
+  const auto count = [](const std::vector<ccd::EventError>& errors, bool ccd::EventError::*flag) {
+    return std::count_if(errors.begin(), errors.end(), [&](const ccd::EventError& e) { return e.*flag; });
+  };
+  std::ostringstream out;
+  out << "<ccdlab.Truth " << t.events.size() << " events";
+  if (!t.errors.empty())
+    out << " (" << count(t.errors, &ccd::EventError::grazing) << " grazing, "
+        << count(t.errors, &ccd::EventError::undecided) << " undecided)";
+  out << ", " << t.static_events.size() << " static events, horizon " << t.horizon << " s>";
+  return out.str();
+}
+
 }  // namespace
 
 void bind_truth(py::module_& m) {
@@ -121,6 +138,7 @@ void bind_truth(py::module_& m) {
       .def_property_readonly("horizon", [](const PyTruth& t) { return t.file->horizon; })
       .def_property_readonly("scene_sha256", [](const PyTruth& t) { return t.file->scene_sha256; })
       .def("__len__", [](const PyTruth& t) { return t.file->events.size(); })
+      .def("__repr__", [](const PyTruth& t) { return truth_repr(*t.file); })
       .def("__iter__", [](const PyTruth& t) { return py::iter(py::make_tuple(t.a, t.b, t.enter, t.exit)); })
       .def(
           "to_json", [](const PyTruth& t) { return to_python(ccd::truth_to_json(*t.file)); },

@@ -14,6 +14,8 @@ trap 'rm -rf "$work"' EXIT
 # source tree gets no egg-info or build/ leftovers.
 mkdir "$work/project"
 cp "$src/pyproject.toml" "$src/setup.py" "$src/README.md" "$src/CMakeLists.txt" "$work/project/"
+mkdir "$work/project/python"
+cp -r "$src/python/ccdlab" "$work/project/python/"
 /usr/bin/python3 -m venv --system-site-packages "$work/venv"
 export CCDLAB_BUILD_DIR=$build PIP_NO_INDEX=1 PIP_DISABLE_PIP_VERSION_CHECK=1
 unset PYTHONPATH
