@@ -19,4 +19,8 @@ PairTest AabbBound::test(std::uint32_t a, std::uint32_t b) const {
   return PairTest::possible_from(t0_);
 }
 
+void AabbBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  out.push_back(Volume::box(boxes_[body], t0_, t0_));
+}
+
 }  // namespace ccd

@@ -5,6 +5,7 @@
 // per body, so every broad phase of ccd/broad_phase/registry.hpp can cull with it, and a
 // pair test of its own that filters the broad phase's pairs. The registry is
 // bounds/registry.hpp; method names compose as BOUND/BROADPHASE.
+#include <bounds/volume.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/motion/body_state.hpp>
 #include <ccd/motion/trajectory.hpp>
@@ -118,6 +119,12 @@ class Bound {
   virtual void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes);
   /// The window body `body` covers since its last prepare or refresh.
   virtual Window window(std::uint32_t body) const = 0;
+  /// Appends to `out` the volumes this bound tests for `body` since its last prepare or
+  /// refresh (bounds/volume.hpp), built from the data its pair test reads: together they
+  /// hold the body over its window, each over its own time span (a sub-interval's volume
+  /// holds the body over that sub-interval). What the viewer draws (docs/viewer.md) and
+  /// what tests/bounds/volumes_test.cpp checks against the motion and against the boxes.
+  virtual void volumes(std::uint32_t body, std::vector<Volume>& out) const = 0;
   /// The bound's test of body `body` against a static polygon of the scenery (the static
   /// index's pair, ccd/broad_phase/static_index.hpp): Disjoint only when the body's bound
   /// cannot meet the polygon in the body's window, else Possible with the earliest time

@@ -129,4 +129,9 @@ PairTest CapsuleBound::test_static(std::uint32_t body, const Aabb& body_box, con
   return PairTest::possible_from(std::min(speed_earliest_static({c.p0, w.t0, c.speed, c.body_radius}, d, slack), w.t1));
 }
 
+void CapsuleBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  const Capsule& c = capsules_[body];
+  out.push_back(Volume::capsule(c.p0, c.p1, c.radius, windows_[body].t0, windows_[body].t1));
+}
+
 }  // namespace ccd

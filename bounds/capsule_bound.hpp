@@ -44,6 +44,7 @@ class CapsuleBound final : public Bound {
                        const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
   Window window(std::uint32_t body) const override { return windows_[body]; }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
   const Capsule& capsule(std::uint32_t body) const { return capsules_[body]; }
 
  private:

@@ -109,4 +109,10 @@ PairTest EnclosingSphereBound::test_static(std::uint32_t body, const Aabb& body_
       speed_earliest_static(x.ball, d, static_rounding_slack(x.ball.centre, polygon)), windows_[body].t1));
 }
 
+void EnclosingSphereBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  const Shape& s = shapes_[body];
+  const Window w = windows_[body];
+  out.push_back(s.boxed ? Volume::box(s.box, w.t0, w.t1) : Volume::sphere(s.centre, s.radius, w.t0, w.t1));
+}
+
 }  // namespace ccd

@@ -26,4 +26,8 @@ PairTest FrameAabbBound::test(std::uint32_t a, std::uint32_t b) const {
   return PairTest::possible_from(t0_);
 }
 
+void FrameAabbBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  out.push_back(Volume::box(boxes_[body], t0_, t0_));
+}
+
 }  // namespace ccd

@@ -15,6 +15,7 @@ class FrameAabbBound final : public Bound {
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
   Window window(std::uint32_t) const override { return {t0_, t0_}; }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
 
  private:
   std::vector<Aabb> boxes_;

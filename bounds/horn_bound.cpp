@@ -52,4 +52,10 @@ PairTest HornBound::test_static(std::uint32_t body, const Aabb& body_box, const 
   return PairTest::disjoint();
 }
 
+void HornBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  // Each moving trapezoid as the box it sweeps over its sub-interval (its hull).
+  const Trapezoid* z = traps_.data() + std::size_t{body} * m_;
+  for (int j = 0; j < m_; ++j) out.push_back(Volume::box(z[j].hull(), z[j].t0, z[j].t1));
+}
+
 }  // namespace ccd

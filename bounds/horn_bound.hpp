@@ -38,6 +38,7 @@ class HornBound final : public Bound {
     const Trapezoid* z = traps_.data() + std::size_t{body} * m_;
     return {z[0].t0, z[m_ - 1].t1};
   }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
   int pieces() const { return m_; }
   /// Trapezoid j (sub-interval j, 0 <= j < M) of `body` from the last prepare.
   const Trapezoid& trapezoid(std::uint32_t body, int j) const { return traps_[std::size_t{body} * m_ + j]; }

@@ -144,4 +144,15 @@ PairTest HornSatBound::test_split(std::uint32_t a, std::uint32_t b) const {
   return PairTest::disjoint();
 }
 
+void HornSatBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  // Each moving oriented trapezoid as the box on its own axes that holds both its ends
+  // (the box at every time in between is their interpolation, so it lies in there too).
+  for (int j = 0; j < m_; ++j) {
+    const OrientedTrapezoid z = trapezoid(body, j);
+    const Vec3 l0 = z.axes.transpose() * z.c0, l1 = z.axes.transpose() * z.c1;
+    const Vec3 lo = (l0 - z.h0).cwiseMin(l1 - z.h1), hi = (l0 + z.h0).cwiseMax(l1 + z.h1);
+    out.push_back(Volume::oriented_box(z.axes * (0.5 * (lo + hi)), z.axes, 0.5 * (hi - lo), z.t0, z.t1));
+  }
+}
+
 }  // namespace ccd

@@ -31,6 +31,7 @@ class HornSatBound final : public Bound {
     const double* t = times_.data() + std::size_t{body} * (m_ + 1);
     return {t[0], t[m_]};
   }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
   int pieces() const { return m_; }
   /// Oriented trapezoid j (0 <= j < M) of `body` from the last prepare.
   OrientedTrapezoid trapezoid(std::uint32_t body, int j) const;

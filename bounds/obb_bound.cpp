@@ -34,4 +34,9 @@ PairTest ObbBound::test(std::uint32_t a, std::uint32_t b) const {
   return PairTest::possible_from(t0_);
 }
 
+void ObbBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  const OrientedBox& o = obbs_[body];
+  out.push_back(Volume::oriented_box(o.centre, o.axes, o.half, t0_, t0_));
+}
+
 }  // namespace ccd

@@ -16,6 +16,7 @@ class ObbBound final : public Bound {
   void prepare(const StepContext& ctx, std::vector<Aabb>& boxes) override;
   PairTest test(std::uint32_t a, std::uint32_t b) const override;
   Window window(std::uint32_t) const override { return {t0_, t0_}; }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
   /// The oriented box of `body` from the last prepare.
   const OrientedBox& box(std::uint32_t body) const { return obbs_[body]; }
 

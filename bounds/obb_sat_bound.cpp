@@ -129,4 +129,12 @@ PairTest ObbSatBound::test(std::uint32_t a, std::uint32_t b) const {
   return PairTest::disjoint();
 }
 
+void ObbSatBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  const double* t = times_.data() + std::size_t{body} * (m_ + 1);
+  for (int j = 0; j < m_; ++j) {
+    const OrientedBox& o = box(body, j);
+    out.push_back(Volume::oriented_box(o.centre, o.axes, o.half, t[j], t[j + 1]));
+  }
+}
+
 }  // namespace ccd

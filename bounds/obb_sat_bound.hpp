@@ -38,6 +38,7 @@ class ObbSatBound final : public Bound {
     const double* t = times_.data() + std::size_t{body} * (m_ + 1);
     return {t[0], t[m_]};
   }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
   int pieces() const { return m_; }
   /// Oriented box j (0 <= j < M) of `body` from the last prepare or refresh.
   const OrientedBox& box(std::uint32_t body, int j) const { return obbs_[std::size_t{body} * m_ + j]; }

@@ -34,4 +34,8 @@ PairTest SphereBound::test_static(std::uint32_t body, const Aabb& body_box, cons
   return PairTest::possible_from(t0_);
 }
 
+void SphereBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  out.push_back(Volume::sphere(balls_[body].centre, balls_[body].radius, t0_, t0_));
+}
+
 }  // namespace ccd

@@ -16,6 +16,7 @@ class SphereBound final : public Bound {
   PairTest test_static(std::uint32_t body, const Aabb& body_box, const StaticPolygon& polygon,
                        const Aabb& polygon_box) const override;
   Window window(std::uint32_t) const override { return {t0_, t0_}; }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
 
  private:
   struct Ball {

@@ -61,4 +61,8 @@ PairTest SweptAabbBound::test_static(std::uint32_t body, const Aabb& body_box, c
       std::min(speed_earliest_static(b, d, static_rounding_slack(b.centre, polygon)), windows_[body].t1));
 }
 
+void SweptAabbBound::volumes(std::uint32_t body, std::vector<Volume>& out) const {
+  out.push_back(Volume::box(boxes_[body], windows_[body].t0, windows_[body].t1));
+}
+
 }  // namespace ccd

@@ -21,6 +21,7 @@ class SweptAabbBound final : public Bound {
                        const Aabb& polygon_box) const override;
   void refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) override;
   Window window(std::uint32_t body) const override { return windows_[body]; }
+  void volumes(std::uint32_t body, std::vector<Volume>& out) const override;
 
  private:
   Aabb build(const StepContext& ctx, std::size_t i);

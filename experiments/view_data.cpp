@@ -1,6 +1,7 @@
 #include "view_data.hpp"
 
 #include "results_file.hpp"
+#include "view_volumes.hpp"
 #include "work_estimate.hpp"
 
 #include <ccd/io/utf8_text.hpp>
@@ -24,12 +25,7 @@ namespace {
 
 using nlohmann::json;
 
-// 9 significant digits: what a float (the GPU's precision) can show, and short JSON.
-double shown(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.9g", x);
-  return std::strtod(text, nullptr);
-}
+double shown(double x) { return view_number(x); }
 
 void append(json& out, const ccd::Vec3& v) {
   for (int k = 0; k < 3; ++k) out.push_back(shown(v[k]));
@@ -136,6 +132,12 @@ json runs_of(const json& results, const std::string& file, std::size_t bodies, s
 }
 
 }  // namespace
+
+double view_number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", x);
+  return std::strtod(text, nullptr);
+}
 
 json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
   const std::string digest = ccd::scene_digest(scene);
@@ -256,6 +258,7 @@ json body_view_data(const ccd::Scene& scene, const ViewInputs& in) {
   data["results_file"] = in.results ? json(ccd::escape_invalid_utf8(in.results_file)) : json(nullptr);
   data["runs"] = in.results ? runs_of(*in.results, in.results_file, n, scene.scenery.size(), scene.horizon)
                             : json::array();
+  add_run_volumes(scene, traj, data["runs"]);
   return data;
 }
 

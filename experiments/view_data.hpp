@@ -1,7 +1,7 @@
 #pragma once
 // What the viewer page (`ccdlab view`, viewer/) is given: a scene's motion as the pieces of
-// its exact trajectories, and optionally the ground truth and the records of a results file
-// (docs/viewer.md). The page evaluates p + v s + a s^2 / 2 on the piece that holds t (and
+// its exact trajectories, and optionally the ground truth and the records of a results file,
+// each with the volumes its bound tested (experiments/view_volumes.hpp; docs/viewer.md). The page evaluates p + v s + a s^2 / 2 on the piece that holds t (and
 // the rotation pieces of spinning shapes): the pieces come from ccd::Trajectories and
 // ccd::Rotations, so the page draws the motion the truth and the methods saw, without
 // frame dumps (a 10,000-body scene is a few pieces per body).
@@ -36,6 +36,9 @@ struct ViewInputs {
 /// The page entries (trajectory pieces and sampled rotation pieces) `ccdlab view` writes
 /// without --force: each is about 150 bytes of page, so the limit is about 750 MB.
 inline constexpr double kMaxViewEntries = 5e6;
+
+/// `x` with 9 significant digits (what a float, the GPU's precision, can show; short JSON).
+double view_number(double x);
 
 /// The page's data for a body scene (`ccdlab-scene/1` or `/2`). Throws ccd::InputError
 /// (see the header comment; also when the page would hold more than kMaxViewEntries

@@ -6,13 +6,11 @@
 // each spinning shape's orientation as rotation pieces [t0, t1, q0 (w x y z), omega]
 // (q(t) = exp(s omega / 2) q0). The page only evaluates them: no physics of its own.
 //
-// Bounds of a method over the step [t_k, t_k+1] that holds t, from the bound's name:
-//   sphere, aabb                 the body at the sample t_k (sphere, or its box)
-//   swept_aabb                   the box of the swept sphere (path extremes per piece)
-//   capsule                      chord of the step, radius r + e (bounds/capsule_bound.hpp)
-//   horn:M, horn_sat:M           M boxes of the horn, p + v s grown by r + A s^2 / 2,
-//                                A = the run's acceleration bound (drawn without wall folding)
-//   enclosing_sphere             one sphere around the horn (bounds/enclosing_sphere_bound.hpp)
+// Bounds: the volumes each run's bound tested (`volumes` of each run, computed by the C++
+// bounds: experiments/view_volumes.hpp): per body, windows [w0, w1, volumes] with boxes,
+// spheres, capsules and oriented boxes. The page draws those of the window that holds t and
+// computes no bound of its own; where the page holds none (a large page keeps only the
+// windows of the missed contacts) it says so.
 (function () {
   'use strict';
 
@@ -120,17 +118,8 @@
   }
 
   // ---------------------------------------------------------------- bounds of a method
-  function boundKind(run) {
-    const name = String(run.bound || run.method.split('/')[0]);
-    const base = name.split(':')[0];
-    let pieces = 4;
-    if (run.options && run.options.bound && run.options.bound.pieces) pieces = run.options.bound.pieces;
-    else if (name.indexOf(':') >= 0) pieces = parseInt(name.split(':')[1], 10) || 4;
-    return { base: base, pieces: pieces };
-  }
-
-  // The step [t0, t1] of `run` that holds t: samples at k dt (k dt <= horizon), a step from
-  // each sample to the next or to the horizon (experiments/runner.cpp).
+  // The step [t0, t1] of a fixed-step `run` that holds t: samples at k dt (k dt <= horizon),
+  // a step from each sample to the next or to the horizon (experiments/runner.cpp).
   function stepAt(run, t) {
     const T = data.horizon;
     let k = Math.max(0, Math.floor(t / run.dt + 1e-9));
@@ -138,136 +127,25 @@
     return { k: k, t0: k * run.dt, t1: Math.min((k + 1) * run.dt, T) };
   }
 
-  // Appends to `out` the volumes body i's bound covers over `step`:
-  // {type: 'box', min, max} | {type: 'sphere', c, r} | {type: 'capsule', a, b, r}.
-  function boundVolumes(motion, run, kind, i, step, out) {
-    const r = motion.radius[i];
-    const P = (t) => motion.position(i, t, new THREE.Vector3());
-    const base = kind.base;
-    if (base === 'sphere' || !run.continuous) {
-      const c = P(step.t0);
-      if (base === 'sphere') out.push({ type: 'sphere', c: c, r: r });
-      else out.push({ type: 'box', min: c.clone().addScalar(-r), max: c.clone().addScalar(r) });
-      return;
+  // The entry [w0, w1, volumes] of body i in `run` whose window holds t (the later one at a
+  // shared end), or null where the page holds none.
+  function volumeEntry(run, i, t) {
+    const v = run.volumes;
+    const list = v && v.bodies && v.bodies[i];
+    if (!list || !list.length) return null;
+    let lo = 0, hi = list.length - 1, best = -1;
+    while (lo <= hi) {
+      const mid = (lo + hi) >> 1;
+      if (list[mid][0] <= t) { best = mid; lo = mid + 1; } else hi = mid - 1;
     }
-    if (base === 'swept_aabb') {
-      const box = sweptBox(motion, i, step.t0, step.t1);
-      box.min.addScalar(-r); box.max.addScalar(r);
-      out.push({ type: 'box', min: box.min, max: box.max });
-      return;
-    }
-    if (base === 'capsule') {
-      const a = P(step.t0), b = P(step.t1);
-      let e = 0;
-      const parts = subPieces(motion, i, step.t0, step.t1);
-      for (const q of parts) {
-        const acc = Math.hypot(q.a[0], q.a[1], q.a[2]);
-        const dev = acc * (q.u1 - q.u0) * (q.u1 - q.u0) / 8;
-        const ends = parts.length === 1 ? 0 : Math.max(segmentDistance(P(q.u0), a, b), segmentDistance(P(q.u1), a, b));
-        e = Math.max(e, ends + dev);
-      }
-      out.push({ type: 'capsule', a: a, b: b, r: r + e });
-      return;
-    }
-    const p = P(step.t0), v = motion.velocity(i, step.t0, new THREE.Vector3());
-    const A = run.acceleration_bound || 0, h = step.t1 - step.t0;
-    if (base === 'enclosing_sphere') {
-      const speed = v.length();
-      let c, rad;
-      if (A * h < 2 * speed) { c = h / 2 + A * h * h / (4 * speed); rad = r + speed * h / 2 + A * h * h / 4; }
-      else { c = h; rad = r + A * h * h / 2; }
-      out.push({ type: 'sphere', c: p.clone().addScaledVector(v, c), r: rad });
-      return;
-    }
-    // horn:M and horn_sat:M: M boxes over equal sub-intervals.
-    const M = Math.max(1, kind.pieces);
-    for (let j = 0; j < M; ++j) {
-      const s0 = h * j / M, s1 = h * (j + 1) / M;
-      const x0 = p.clone().addScaledVector(v, s0), x1 = p.clone().addScaledVector(v, s1);
-      const g = r + A * s1 * s1 / 2;
-      out.push({ type: 'box', min: x0.clone().min(x1).addScalar(-g), max: x0.clone().max(x1).addScalar(g) });
-    }
+    return best >= 0 && t <= list[best][1] ? list[best] : null;
   }
 
-  // The pieces of body i inside [u0, u1], each {u0, u1, a}.
-  function subPieces(motion, i, u0, u1) {
-    const arr = motion.pieces[i];
-    const out = [];
-    let k = pieceIndex(arr, PIECE, u0, -1);
-    const m = arr.length / PIECE;
-    for (; k < m; ++k) {
-      const o = k * PIECE;
-      const a0 = Math.max(u0, arr[o]), a1 = Math.min(u1, arr[o + 1]);
-      if (a1 < a0 || (a1 === a0 && out.length)) break;
-      out.push({ u0: a0, u1: a1, a: [arr[o + 8], arr[o + 9], arr[o + 10]], o: o });
-      if (arr[o + 1] >= u1) break;
-    }
-    return out;
-  }
-
-  // Tight box of the centre's path over [u0, u1]: piece ends and the vertex of each axis.
-  function sweptBox(motion, i, u0, u1) {
-    const arr = motion.pieces[i];
-    const min = new THREE.Vector3(Infinity, Infinity, Infinity), max = min.clone().negate();
-    const x = new THREE.Vector3();
-    for (const q of subPieces(motion, i, u0, u1)) {
-      const o = q.o;
-      const at = (t) => { const s = t - arr[o]; return x.set(arr[o + 2] + arr[o + 5] * s + arr[o + 8] * s * s / 2,
-        arr[o + 3] + arr[o + 6] * s + arr[o + 9] * s * s / 2, arr[o + 4] + arr[o + 7] * s + arr[o + 10] * s * s / 2); };
-      min.min(at(q.u0)); max.max(x);
-      min.min(at(q.u1)); max.max(x);
-      for (let d = 0; d < 3; ++d) {
-        const acc = arr[o + 8 + d];
-        if (acc === 0) continue;
-        const tv = arr[o] - arr[o + 5 + d] / acc;
-        if (tv > q.u0 && tv < q.u1) { min.min(at(tv)); max.max(x); }
-      }
-    }
-    return { min: min, max: max };
-  }
-
-  function segmentDistance(p, a, b) {
-    const ab = b.clone().sub(a);
-    const len2 = ab.lengthSq();
-    const s = len2 > 0 ? Math.min(1, Math.max(0, p.clone().sub(a).dot(ab) / len2)) : 0;
-    return a.clone().addScaledVector(ab, s).distanceTo(p);
-  }
-
-  function segmentSegmentDistance(p1, q1, p2, q2) {
-    // Closest points of two segments (Ericson, Real-Time Collision Detection, 5.1.9).
-    const d1 = q1.clone().sub(p1), d2 = q2.clone().sub(p2), r = p1.clone().sub(p2);
-    const a = d1.dot(d1), e = d2.dot(d2), f = d2.dot(r);
-    let s, t;
-    if (a <= 1e-300 && e <= 1e-300) return p1.distanceTo(p2);
-    if (a <= 1e-300) { s = 0; t = Math.min(1, Math.max(0, f / e)); }
-    else {
-      const c = d1.dot(r);
-      if (e <= 1e-300) { t = 0; s = Math.min(1, Math.max(0, -c / a)); }
-      else {
-        const b = d1.dot(d2), den = a * e - b * b;
-        s = den > 0 ? Math.min(1, Math.max(0, (b * f - c * e) / den)) : 0;
-        t = (b * s + f) / e;
-        if (t < 0) { t = 0; s = Math.min(1, Math.max(0, -c / a)); }
-        else if (t > 1) { t = 1; s = Math.min(1, Math.max(0, (b - c) / a)); }
-      }
-    }
-    return p1.clone().addScaledVector(d1, s).distanceTo(p2.clone().addScaledVector(d2, t));
-  }
-
-  // Whether two volumes overlap (box-box, sphere-sphere, capsule-capsule; a mixed pair by
-  // the volumes' boxes).
-  function volumesOverlap(x, y) {
-    if (x.type === 'sphere' && y.type === 'sphere') return x.c.distanceTo(y.c) <= x.r + y.r;
-    if (x.type === 'capsule' && y.type === 'capsule') return segmentSegmentDistance(x.a, x.b, y.a, y.b) <= x.r + y.r;
-    const bx = volumeBox(x), by = volumeBox(y);
-    return bx.min.x <= by.max.x && by.min.x <= bx.max.x && bx.min.y <= by.max.y && by.min.y <= bx.max.y &&
-      bx.min.z <= by.max.z && by.min.z <= bx.max.z;
-  }
-
-  function volumeBox(v) {
-    if (v.type === 'box') return v;
-    if (v.type === 'sphere') return { min: v.c.clone().addScalar(-v.r), max: v.c.clone().addScalar(v.r) };
-    return { min: v.a.clone().min(v.b).addScalar(-v.r), max: v.a.clone().max(v.b).addScalar(v.r) };
+  // Why a run has no volumes at some place (the C++ side's reason), for the pair's line.
+  function volumesNote(run) {
+    const v = run.volumes;
+    if (!v) return 'the page holds no bounds for this run';
+    return v.coverage === 'all' ? '' : v.reason;
   }
 
   // ---------------------------------------------------------------- the side panel
@@ -341,7 +219,8 @@
       (r.continuous ? 'continuous' : 'discrete') + (r.conservative ? ', conservative' : '') + '; ' +
       (r.missed !== undefined ? missedCount(r) + ' missed of ' + (body + scenery) + ' contacts' + kinds : '') +
       (r.false_positives !== undefined ? ', ' + r.false_positives + ' false positives' : '') +
-      (missedOf(r) === null && missedCount(r) > 0 ? ' (the results list no missed contacts: run with --list-missed)' : '');
+      (missedOf(r) === null && missedCount(r) > 0 ? ' (the results list no missed contacts: run with --list-missed)' : '') +
+      (volumesNote(r) ? '. Bounds: ' + volumesNote(r) : '');
     fillMissedTable(r);
     if (byUser) { state.pair = null; state.missedIndex = -1; }
     state.dirty = true;
@@ -711,7 +590,7 @@
       scene3.add(m);
       return m;
     });
-    // The pair's paths over the current step, drawn over everything: a tunnelling body's
+    // The pair's paths over their windows, drawn over everything: a tunnelling body's
     // path crosses the other body between two samples.
     const PATH_POINTS = 64;
     const pathGeo = new THREE.BufferGeometry();
@@ -762,20 +641,64 @@
     const centres = new Float32Array(3 * n);
     const up = new THREE.Vector3(0, 1, 0);
 
-    function pushVolume(v, box, sphere, cyl) {
-      if (v.type === 'box') {
-        box.push(pos.copy(v.min).add(v.max).multiplyScalar(0.5), ident, scale.copy(v.max).sub(v.min));
-      } else if (v.type === 'sphere') {
-        sphere.push(v.c, ident, scale.set(v.r, v.r, v.r));
-      } else {
-        sphere.push(v.a, ident, scale.set(v.r, v.r, v.r));
-        sphere.push(v.b, ident, scale.set(v.r, v.r, v.r));
-        const d = v.b.clone().sub(v.a), len = d.length();
+    // Draws volume `v` of the page's data (experiments/view_volumes.hpp) with the pools
+    // `box`, `sphere` and `cyl`, and merges the world box of what it drew into `hull`
+    // ({lo, hi}, from the instance transforms themselves: what tests read back).
+    const axisX = new THREE.Vector3(), axisY = new THREE.Vector3(), axisZ = new THREE.Vector3();
+    const e = new THREE.Vector3(), basis = new THREE.Matrix4();
+    function mergeBall(hull, c, r) {
+      for (let k = 0; k < 3; ++k) {
+        hull.lo[k] = Math.min(hull.lo[k], c.getComponent(k) - r);
+        hull.hi[k] = Math.max(hull.hi[k], c.getComponent(k) + r);
+      }
+    }
+    function pushBox(pool, centre, q, size, hull) {
+      pool.push(centre, q, size);
+      m4.compose(centre, q, size);
+      const el4 = m4.elements;  // column-major: the unit cube's half-extents are half the columns
+      for (let k = 0; k < 3; ++k) {
+        const half = 0.5 * (Math.abs(el4[k]) + Math.abs(el4[4 + k]) + Math.abs(el4[8 + k]));
+        hull.lo[k] = Math.min(hull.lo[k], el4[12 + k] - half);
+        hull.hi[k] = Math.max(hull.hi[k], el4[12 + k] + half);
+      }
+    }
+    function pushVolume(v, box, sphere, cyl, hull) {
+      if (v.kind === 'box') {
+        const lo = new THREE.Vector3().fromArray(v.lo), hi = new THREE.Vector3().fromArray(v.hi);
+        pushBox(box, pos.copy(lo).add(hi).multiplyScalar(0.5), ident, scale.copy(hi).sub(lo), hull);
+      } else if (v.kind === 'oriented_box') {
+        axisX.fromArray(v.axes, 0); axisY.fromArray(v.axes, 3); axisZ.fromArray(v.axes, 6);
+        // A box is symmetric: a left-handed frame is the right-handed one with an axis flipped.
+        if (axisX.clone().cross(axisY).dot(axisZ) < 0) axisZ.negate();
+        basis.makeBasis(axisX, axisY, axisZ);
+        quat.setFromRotationMatrix(basis);
+        pushBox(box, pos.fromArray(v.c), quat, scale.fromArray(v.half).multiplyScalar(2), hull);
+      } else if (v.kind === 'sphere') {
+        pos.fromArray(v.c);
+        sphere.push(pos, ident, scale.set(v.r, v.r, v.r));
+        mergeBall(hull, pos, v.r);
+      } else if (v.kind === 'capsule') {
+        const a = new THREE.Vector3().fromArray(v.a), b = new THREE.Vector3().fromArray(v.b);
+        sphere.push(a, ident, scale.set(v.r, v.r, v.r));
+        sphere.push(b, ident, scale.set(v.r, v.r, v.r));
+        mergeBall(hull, a, v.r);
+        mergeBall(hull, b, v.r);
+        const d = b.clone().sub(a), len = d.length();
         if (len > 0) {
           quat.setFromUnitVectors(up, d.clone().multiplyScalar(1 / len));
-          cyl.push(pos.copy(v.a).add(v.b).multiplyScalar(0.5), quat, scale.set(v.r, len, v.r));
+          cyl.push(pos.copy(a).add(b).multiplyScalar(0.5), quat, scale.set(v.r, len, v.r));
         }
       }
+    }
+
+    // Draws body i's volumes of `run` at t; returns what the page read back for it
+    // ({window, kinds, lo, hi}), or null where the page holds none.
+    function drawBodyVolumes(run, i, t, box, sphere, cyl) {
+      const entry = volumeEntry(run, i, t);
+      if (!entry) return null;
+      const hull = { lo: [Infinity, Infinity, Infinity], hi: [-Infinity, -Infinity, -Infinity] };
+      for (const v of entry[2]) pushVolume(v, box, sphere, cyl, hull);
+      return { window: [entry[0], entry[1]], kinds: entry[2].map((v) => v.kind), lo: hull.lo, hi: hull.hi };
     }
 
     updateScene = function () {
@@ -802,10 +725,14 @@
         });
         g.mesh.instanceMatrix.needsUpdate = true;
       }
-      // Highlighted pair, its bodies at the sample, its bounds.
+      // Highlighted pair, its bodies at the start of their windows (the state each bound was
+      // built from), their paths over the windows, their bounds.
       const run = state.run, pair = state.pair;
-      const step = run ? stepAt(run, t) : null;
-      const kind = run ? boundKind(run) : null;
+      const windowOf = (i) => {
+        const entry = run ? volumeEntry(run, i, t) : null;
+        if (entry) return { t0: entry[0], t1: entry[1] };
+        return run ? stepAt(run, t) : null;
+      };
       for (let k = 0; k < 2; ++k) {
         const i = pair && k < pair.length ? pair[k] : -1;
         highlight[k].visible = i >= 0;
@@ -817,22 +744,24 @@
         motion.position(i, t, highlight[k].position);
         if (g.scaled) { highlight[k].quaternion.set(0, 0, 0, 1); highlight[k].scale.setScalar(motion.radius[i]); }
         else { motion.orientation(i, t, highlight[k].quaternion); highlight[k].scale.setScalar(1); }
-        if (step && el('show-samples').checked) {
+        const w = windowOf(i);
+        if (w && el('show-samples').checked) {
           ghosts[k].visible = true;
           ghosts[k].geometry = g.geometry;
-          motion.position(i, step.t0, ghosts[k].position);
+          motion.position(i, w.t0, ghosts[k].position);
           if (g.scaled) { ghosts[k].quaternion.set(0, 0, 0, 1); ghosts[k].scale.setScalar(motion.radius[i]); }
-          else { motion.orientation(i, step.t0, ghosts[k].quaternion); ghosts[k].scale.setScalar(1); }
+          else { motion.orientation(i, w.t0, ghosts[k].quaternion); ghosts[k].scale.setScalar(1); }
         }
       }
-      pathLines.visible = !!(pair && step);
+      pathLines.visible = !!(pair && run);
       if (pathLines.visible) {
         const arr = pathGeo.attributes.position.array;
         let c = 0;
         for (const i of pair) {
+          const w = windowOf(i);
           for (let j = 0; j < PATH_POINTS; ++j) {
             for (const u of [j, j + 1]) {
-              motion.position(i, step.t0 + (step.t1 - step.t0) * u / PATH_POINTS, pos);
+              motion.position(i, w.t0 + (w.t1 - w.t0) * u / PATH_POINTS, pos);
               arr[c++] = pos.x; arr[c++] = pos.y; arr[c++] = pos.z;
             }
           }
@@ -842,25 +771,29 @@
       }
       for (const p of Object.values(pools)) p.begin();
       let pairText = '';
-      if (run && pair && pair.length === 1 && el('show-bounds').checked) {
-        const va = [];
-        boundVolumes(motion, run, kind, pair[0], step, va);
-        for (const v of va) pushVolume(v, pools.pairBox, pools.pairSphere, pools.pairCyl);
-        pairText = 'its bounds over the step [' + formatNumber(step.t0) + ', ' + formatNumber(step.t1) + ']';
-      } else if (run && pair && el('show-bounds').checked) {
-        const va = [], vb = [];
-        boundVolumes(motion, run, kind, pair[0], step, va);
-        boundVolumes(motion, run, kind, pair[1], step, vb);
-        for (const v of va.concat(vb)) pushVolume(v, pools.pairBox, pools.pairSphere, pools.pairCyl);
-        const overlap = va.some((x) => vb.some((y) => volumesOverlap(x, y)));
-        pairText = 'bounds over the step [' + formatNumber(step.t0) + ', ' + formatNumber(step.t1) + '] ' +
-          (overlap ? 'overlap: the pair is a candidate' : 'do not overlap: the pair is not a candidate');
+      const drawn = {};
+      if (run && pair && el('show-bounds').checked) {
+        const missing = [];
+        for (const i of pair) {
+          const d = drawBodyVolumes(run, i, t, pools.pairBox, pools.pairSphere, pools.pairCyl);
+          if (d) drawn[i] = d; else missing.push(i);
+        }
+        const shown = pair.filter((i) => drawn[i]).map((i) => 'body ' + i + ' over [' +
+          formatNumber(drawn[i].window[0]) + ', ' + formatNumber(drawn[i].window[1]) + ']');
+        pairText = (shown.length ? 'bounds of ' + shown.join(', ') : '') +
+          (missing.length ? (shown.length ? '; ' : '') + 'no bounds in the page here for body ' + missing.join(', ') +
+            (volumesNote(run) ? ' (' + volumesNote(run) + ')' : '') : '');
       }
       if (run && el('show-all-bounds').checked) {
-        const vs = [];
-        for (let i = 0; i < n; ++i) boundVolumes(motion, run, kind, i, step, vs);
-        for (const v of vs) pushVolume(v, pools.box, pools.sphere, pools.cyl);
+        for (let i = 0; i < n; ++i) {
+          if (pair && pair.indexOf(i) >= 0 && el('show-bounds').checked) continue;  // drawn above
+          const d = drawBodyVolumes(run, i, t, pools.box, pools.sphere, pools.cyl);
+          if (d) drawn[i] = d;
+        }
       }
+      // What was drawn, for tests (tests/viewer/browser_test.py): per body its window, the
+      // kinds of its volumes and the world box of the drawn instances.
+      if (n <= 2000) body.dataset.volumes = JSON.stringify(drawn);
       for (const p of Object.values(pools)) p.end(true);
       sceneryHighlight(state.polygon !== null && pair && pair.length === 1 ? state.polygon : null);
       if (pair && pair.length === 1) {
@@ -879,12 +812,13 @@
           gap.toPrecision(4) + (motion.shape[pair[0]] >= 0 || motion.shape[pair[1]] >= 0 ? ' (enclosing balls)' : '') +
           (pairText ? '; ' + pairText : '');
         if (state.focusPair) {
-          // Frame the pair over the whole step: where the method saw it and where it is now.
+          // Frame the pair over its windows: where the method saw it and where it is now.
           state.focusPair = false;
           const min = new THREE.Vector3(Infinity, Infinity, Infinity), max = min.clone().negate();
           for (const i of pair) {
             const r = motion.radius[i];
-            for (const u of step ? [t, step.t0, step.t1] : [t]) {
+            const w = windowOf(i);
+            for (const u of w ? [t, w.t0, w.t1] : [t]) {
               motion.position(i, u, pos);
               min.min(pos.clone().addScalar(-2 * r));
               max.max(pos.clone().addScalar(2 * r));

@@ -12,6 +12,7 @@
 #include <ccd/pipeline/earliest_events.hpp>
 #include <ccd/pipeline/earliest_scheduler.hpp>
 #include <ccd/pipeline/scheduler_images.hpp>
+#include <ccd/pipeline/window_policy.hpp>
 
 #include <cstdint>
 #include <span>
@@ -48,6 +49,7 @@ class EarliestRun {
   // earliest_windows.cpp
   double window_length(std::uint32_t i) const;
   double window_end(std::uint32_t i, double t) const;
+  WindowPolicy window_policy() const;
   void build_windows(double t);
   void refresh(double t);
   void queue_expiry(std::uint32_t i, double w1);

@@ -3,38 +3,18 @@
 #include <ccd/pipeline/earliest_run.hpp>
 
 #include <algorithm>
-#include <cmath>
 
 namespace ccd::earliest {
-namespace {
-
-// Speed-adapted windows are at least dt / 2^10 long.
-constexpr int kMaxWindowHalvings = 10;
-
-}  // namespace
 
 // The length of body i's window from its state (set at its start): dt, or with `reach` the
-// longest dt / 2^k over which it moves at most reach x the mean radius.
-double EarliestRun::window_length(std::uint32_t i) const {
-  double w = dt_;
-  if (!(reach_length_ > 0.0)) return w;
-  const double v = states_[i].velocity.norm();
-  const double A = in_.acceleration_bound;
-  for (int k = 0; k < kMaxWindowHalvings && v * w + 0.5 * A * w * w > reach_length_; ++k) w *= 0.5;
-  return w;
-}
+// longest dt / 2^k over which it moves at most reach x the mean radius (WindowPolicy).
+double EarliestRun::window_length(std::uint32_t i) const { return window_policy().length(states_[i].velocity); }
 
 // The end of body i's window starting at t.
-double EarliestRun::window_end(std::uint32_t i, double t) const {
-  const double w = window_length(i);
-  double w1 = t + w;
-  if (s_.options.align) {  // the next grid time k w > t (the product, as the fixed steps' times)
-    double k = std::floor(t / w) + 1.0;
-    while (k > 1.0 && (k - 1.0) * w > t) k -= 1.0;
-    while (k * w <= t) k += 1.0;
-    w1 = k * w;
-  }
-  return std::min(w1, T_);
+double EarliestRun::window_end(std::uint32_t i, double t) const { return window_policy().end(window_length(i), t); }
+
+WindowPolicy EarliestRun::window_policy() const {
+  return {dt_, T_, in_.acceleration_bound, reach_length_, s_.options.align};
 }
 
 // Rebuilds the bounds of `batch_` (states set) from t, each over its own window, one

@@ -9,6 +9,15 @@ rendered.
   missed contact is not blank and shows the highlighted pair in red.
 - A floor_ramp scene (a floor and ramps): the table lists the record's body-body and
   body-scenery misses together in order of entry, and the screenshot shows the scenery.
+- The bounds drawn are the volumes the C++ bounds computed: for every bound of the registry
+  (the example's methods, four more on the example scene, one of them `@earliest` with
+  speed-adapted windows, and three on the rigid example), with every body's bounds shown,
+  the page reports per body its window and the world box of the instances it drew
+  (data-volumes); that box must equal the hull of the body's volumes in the page's data for
+  the window that holds t, and, where the ccdlab Python module is importable (CMake puts the
+  build's on PYTHONPATH), the box ccdlab.Bound(BOUND).prepare(scene, w0, w1) computes on its
+  own for the sphere scene (contained in the drawn box for capsule and horn_sat, whose
+  volumes are larger than their boxes: docs/viewer.md).
 - The rigid example scene and the frames of a small cloth run load without error.
 
 Usage: browser_test.py CCDLAB SOURCE_DIR. Exits 77 (skipped) with a message when no chromium
@@ -191,12 +200,110 @@ def pixel_counts(path, width_fraction):
     return other, red
 
 
+def page_data(path):
+    """The JSON data `ccdlab view` put in the page."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    marker = 'id="ccdlab-data">'
+    start = text.index(marker) + len(marker)
+    return json.loads(text[start:text.index("</script>", start)])
+
+
+def volume_hull(v):
+    """The world box of one volume of the page's data (as bounds/volume.hpp's hull)."""
+    if v["kind"] == "box":
+        return v["lo"], v["hi"]
+    if v["kind"] == "sphere":
+        return [c - v["r"] for c in v["c"]], [c + v["r"] for c in v["c"]]
+    if v["kind"] == "capsule":
+        return ([min(a, b) - v["r"] for a, b in zip(v["a"], v["b"])],
+                [max(a, b) + v["r"] for a, b in zip(v["a"], v["b"])])
+    if v["kind"] == "oriented_box":
+        ax = v["axes"]
+        e = [sum(abs(ax[3 * c + k]) * v["half"][c] for c in range(3)) for k in range(3)]
+        return [v["c"][k] - e[k] for k in range(3)], [v["c"][k] + e[k] for k in range(3)]
+    sys.exit(f"FAIL: unknown volume kind {v['kind']!r}")
+
+
+def entry_at(run, body, t):
+    """The page data's entry [w0, w1, volumes] of `body` whose window holds t (the page's lookup)."""
+    best = None
+    for e in run["volumes"]["bodies"][body]:
+        if e[0] <= t:
+            best = e
+    return best if best is not None and t <= best[1] else None
+
+
+def close(x, y, tol):
+    return all(abs(a - b) <= tol * (1.0 + abs(b)) for a, b in zip(x, y))
+
+
+# The kinds each bound draws (bounds/*.hpp: Bound::volumes); M = the bound's pieces.
+KINDS = {"sphere": {"sphere"}, "aabb": {"box"}, "frame_aabb": {"box"}, "swept_aabb": {"box"},
+         "capsule": {"capsule"}, "horn": {"box"}, "horn_sat": {"oriented_box"},
+         "enclosing_sphere": {"sphere", "box"}, "obb": {"oriented_box"}, "obb_sat": {"oriented_box"}}
+
+
+def check_volumes(dom, page, url, method, dt, t, every_body, scene_path, module):
+    """The bounds the page drew (data-volumes) against the page's data and, for a sphere
+    scene where the Python module is available, against ccdlab.Bound(...).prepare."""
+    drawn = json.loads(dom.body.get("data-volumes") or "{}")
+    data = page_data(page)
+    run = next(r for r in data["runs"] if r["method"] == method and r["dt"] == dt)
+    if run["volumes"]["coverage"] != "all":
+        sys.exit(f"FAIL: {url}: the example's page should hold every window ({run['volumes']})")
+    bodies = range(data["bodies"]["count"]) if every_body else [int(b) for b in drawn]
+    if not drawn or sorted(int(b) for b in drawn) != sorted(bodies):
+        sys.exit(f"FAIL: {url}: the page drew the bounds of bodies {sorted(drawn)}, expected {list(bodies)}")
+    bound = method.split("/")[0]
+    name = bound.split(":")[0]
+    prepared = {}
+    for b in bodies:
+        d = drawn[str(b)]
+        entry = entry_at(run, b, t)
+        if entry is None or d["window"] != entry[:2]:
+            sys.exit(f"FAIL: {url}: body {b}: drawn over {d['window']}, the data's window at t is {entry and entry[:2]}")
+        if not set(d["kinds"]) <= KINDS[name] or len(d["kinds"]) != len(entry[2]):
+            sys.exit(f"FAIL: {url}: body {b}: drew {d['kinds']} for {bound}")
+        lo, hi = zip(*(volume_hull(v) for v in entry[2]))
+        lo = [min(x[k] for x in lo) for k in range(3)]
+        hi = [max(x[k] for x in hi) for k in range(3)]
+        if not (close(d["lo"], lo, 1e-9) and close(d["hi"], hi, 1e-9)):
+            sys.exit(f"FAIL: {url}: body {b}: drew the box {d['lo']} - {d['hi']}, the data's volumes {lo} - {hi}")
+        if module is None or data["shapes"]:
+            continue
+        w0, w1 = entry[0], entry[1]
+        if (w0, w1) not in prepared:
+            scene = module.load_scene(scene_path)
+            prepared[(w0, w1)] = module.Bound(bound).prepare(scene, w0, w1, acceleration_bound=run["acceleration_bound"])
+        box = prepared[(w0, w1)][b]
+        equal = name not in ("capsule", "horn_sat")
+        tol = 1e-7
+        inside = all(d["lo"][k] <= box[0][k] + tol * (1 + abs(box[0][k])) and box[1][k] <= d["hi"][k] + tol * (1 + abs(box[1][k]))
+                     for k in range(3))
+        same = close(d["lo"], box[0], tol) and close(d["hi"], box[1], tol)
+        if not (same if equal else inside):
+            sys.exit(f"FAIL: {url}: body {b}: drew the box {d['lo']} - {d['hi']}; Bound({bound!r}).prepare over "
+                     f"[{w0}, {w1}] gives {list(box[0])} - {list(box[1])}")
+    return len(bodies)
+
+
+def python_module():
+    """The ccdlab Python module of this build, or None (it is optional)."""
+    try:
+        import ccdlab  # noqa: PLC0415 (optional: CMake puts the build's module on PYTHONPATH)
+        return ccdlab
+    except ImportError:
+        return None
+
+
 def main():
     ccdlab, source = sys.argv[1], sys.argv[2]
     browser = chromium()
     if not browser:
         print("SKIPPED: no chromium found (Debian's chromium: scripts/install-deps.sh)")
         return SKIP
+    module = python_module()
     work = tempfile.mkdtemp(prefix="ccdlab-view-test.")
     try:
         profile = os.path.join(work, "profile")
@@ -251,6 +358,32 @@ def main():
                   f"pair {m0['a']}-{m0['b']} at t = {t_missed}: gap {gap:.4g} m, {other} drawn pixels, {red} of the pair")
             if other < 5000 or red < 200:
                 sys.exit(f"FAIL: the screenshot {png} is blank or lacks the highlighted pair ({other} drawn, {red} red)")
+            n = check_volumes(dom, page, url, method, r["dt"], t_missed, "bounds=all" in extra, scene, module)
+            print(f"{method}: the bounds of {n} bodies drawn as the C++ bounds computed them")
+        # Every other bound, on the example scene and on the rigid example (shaped bodies
+        # that turn), each body's bounds drawn: a run per method at dt = 0.25.
+        rigid_scene = os.path.join(source, "data", "scenes", "rigid-example.json")
+        more = [(os.path.abspath(scene), ["horn_sat:4/sap", "enclosing_sphere/sap", "swept_aabb/sap@earliest:reach=1",
+                                          "sphere/brute"]),
+                (os.path.abspath(rigid_scene), ["obb_sat/sap", "frame_aabb/sap", "obb/sap"])]
+        for k, (scene_path, methods) in enumerate(more):
+            experiment = os.path.join(work, f"more-{k}.json")
+            with open(experiment, "w") as f:
+                json.dump({"format": "ccdlab-experiment/1", "scene": scene_path, "dt": [0.25], "methods": methods}, f)
+            more_results = os.path.join(work, f"more-{k}-results.json")
+            more_page = os.path.join(work, f"more-{k}.html")
+            run([ccdlab, "run", experiment, "-o", more_results, "--quiet"], timeout=600)
+            run([ccdlab, "view", scene_path, "--results", more_results, "-o", more_page])
+            for method in methods:
+                url = f"file://{more_page}#method={method}&dt=0.25&t=0.6&bounds=all"
+                dom = load(browser, profile, url, os.path.join(work, "more.png"))
+                if dom.body.get("data-status") != "ready":
+                    sys.exit(f"FAIL: {url}: page status {dom.body.get('data-status')!r}: {dom.body.get('data-error')}")
+                n = check_volumes(dom, more_page, url, method, 0.25, 0.6, True, scene_path, module)
+                print(f"{method} on {os.path.basename(scene_path)}: the bounds of {n} bodies drawn as the C++ "
+                      "bounds computed them")
+        if module is None:
+            print("the ccdlab Python module is not importable here: drawn boxes compared with the page's data only")
         check_scenery_page(ccdlab, browser, profile, work)
         # The rigid example and a cloth run's frames load and draw.
         rigid = os.path.join(work, "rigid.html")
