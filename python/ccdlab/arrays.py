@@ -4,8 +4,15 @@ import numpy as np
 from ._ccdlab import InputError, scene_from_json
 
 
+def _floats(name, values):
+    try:
+        return np.asarray(values, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise InputError(f"scene_from_arrays: {name}: not an array of numbers ({e})") from None
+
+
 def _rows(name, values, n, width):
-    a = np.asarray(values, dtype=np.float64)
+    a = _floats(name, values)
     want = (n, width) if width else (n,)
     if a.shape != want:
         raise InputError(f"scene_from_arrays: {name}: must be an array of shape {want}, got {a.shape}")
@@ -21,7 +28,7 @@ def _finite(name, a):
 
 
 def _vector(name, values):
-    a = np.asarray(values, dtype=np.float64)
+    a = _floats(name, values)
     if a.shape != (3,):
         raise InputError(f"scene_from_arrays: {name}: must be 3 numbers, got shape {a.shape}")
     return [float(x) for x in _finite(name, a)]
@@ -34,12 +41,12 @@ def scene_from_arrays(positions, velocities, radii, *, horizon, accelerations=No
     (min, max) of 3-vectors for elastic walls, with `boundary` "reflect" (the default) or
     "wrap", or a list of three. Every value is checked as in a scene file (the message names
     the field and the body, e.g. `bodies[3].radius`)."""
-    p = np.asarray(positions, dtype=np.float64)
+    p = _floats("positions", positions)
     if p.ndim != 2 or p.shape[1:] != (3,):
         raise InputError(f"scene_from_arrays: positions: must be an (n, 3) array, got shape {p.shape}")
     n = p.shape[0]
     _finite("positions", p)
-    if not np.isfinite(float(horizon)):
+    if not np.isfinite(_floats("horizon", horizon)).all() or np.ndim(horizon) != 0:
         raise InputError(f"scene_from_arrays: horizon: not a finite number ({horizon})")
     v = _rows("velocities", velocities, n, 3)
     r = _rows("radii", radii, n, 0)
@@ -51,7 +58,7 @@ def scene_from_arrays(positions, velocities, radii, *, horizon, accelerations=No
         if a is not None:
             body["acceleration"] = [float(x) for x in a[i]]
         bodies.append(body)
-    doc = {"format": "ccdlab-scene/1", "horizon": float(horizon), "bodies": bodies}
+    doc = {"format": "ccdlab-scene/1", "horizon": float(_floats("horizon", horizon)), "bodies": bodies}
     if gravity is not None:
         doc["gravity"] = _vector("gravity", gravity)
     if box is not None:

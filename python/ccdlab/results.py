@@ -35,6 +35,13 @@ class Results(dict):
 
     def record(self, method, dt):
         """The record of `method` at timestep `dt` (s; within 1e-9 relative)."""
+        if not isinstance(dt, (int, float)) or isinstance(dt, bool):
+            try:
+                dt = float(dt.item() if hasattr(dt, "item") and getattr(dt, "size", 0) == 1 else dt)
+            except (TypeError, ValueError, AttributeError):
+                raise InputError(f"results: dt: must be a number, got {type(dt).__name__}") from None
+        if not isinstance(method, str):
+            raise InputError(f"results: method: must be a method name (a str), got {type(method).__name__}")
         found = [r for r in self.records if r["method"] == method]
         if not found:
             raise InputError(f"results: method {method!r}: not in the results ({', '.join(self.methods())})")

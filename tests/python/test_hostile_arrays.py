@@ -267,8 +267,88 @@ def test_mesh_ccd_arrays(value, which):
     assert isinstance(result, dict)
 
 
-TESTED = {"BroadPhase", "Bound", "Scene", "scene_from_json", "generate", "run", "truth", "mesh_ccd"}
-NO_ARRAYS = {"InputError", "Truth", "load_scene", "load_truth", "methods", "generators"}
+STEMS = {"positions": "position", "velocities": "velocit", "radii": "radi", "accelerations": "acceleration"}
+
+
+@SETTINGS
+@given(value=hostile_arrays(st.one_of(ANY_SHAPE, st.tuples(st.just(2), st.just(3)), st.just((2,)))),
+       which=st.sampled_from(sorted(STEMS)))
+def test_scene_from_arrays(value, which):
+    args = {"positions": [[0, 0, 0], [3, 0, 0.0]], "velocities": [[1, 0, 0], [-1, 0, 0.0]], "radii": [0.5, 0.5],
+            "accelerations": None}
+    args[which] = value
+    result, error = call(ccdlab.scene_from_arrays, args["positions"], args["velocities"], args["radii"],
+                         accelerations=args["accelerations"], horizon=2.0)
+    if error is not None:
+        refused(error, STEMS[which])
+        return
+    plain = as_type(value, np.float64)
+    assert plain is not None and np.all(np.isfinite(plain)) and isinstance(result, ccdlab.Scene)
+
+
+@SETTINGS
+@given(value=hostile_arrays(st.one_of(ANY_SHAPE, st.tuples(st.just(2), st.just(2), st.just(3)), st.just((2,)))),
+       which=st.sampled_from(["positions", "times", "radii"]))
+def test_import_frames_arrays(value, which):
+    args = {"positions": np.array([[[0, 0, 0], [3, 0, 0]], [[1, 0, 0], [2, 0, 0]]], dtype=float),
+            "times": np.array([0.0, 1.0]), "radii": np.array([0.5, 0.5])}
+    args[which] = value
+    result, error = call(ccdlab.import_frames, args["positions"], args["times"], radii=args["radii"])
+    if error is not None:
+        refused(error, "frames" if which == "times" else STEMS.get(which, which))
+        return
+    assert isinstance(result, ccdlab.Scene)
+
+
+QUERY_SHAPES = st.one_of(ANY_SHAPE, st.just((4, 3)), st.tuples(st.integers(0, 3), st.just(4), st.just(3)))
+
+
+@SETTINGS
+@given(value=hostile_arrays(QUERY_SHAPES), which=st.sampled_from(["start", "end"]),
+       query=st.sampled_from(["vertex_face_ccd", "edge_edge_ccd"]))
+def test_triangle_query_arrays(value, which, query):
+    args = {"start": np.eye(4, 3), "end": np.eye(4, 3) + 0.25}
+    args[which] = value
+    result, error = call(getattr(ccdlab, query), args["start"], args["end"])
+    if error is not None:
+        refused(error, which)
+        return
+    plain = as_type(value, np.float64)
+    assert plain is not None and plain.shape == (4, 3) and isinstance(result, dict)
+
+
+@SETTINGS
+@given(value=hostile_arrays(st.one_of(ANY_SHAPE, st.just((3,)))),
+       which=st.sampled_from(["position_a", "velocity_b", "acceleration_a"]))
+def test_sphere_sphere_toi_arrays(value, which):
+    args = {"position_a": [0, 0, 0], "velocity_a": [1, 0, 0], "position_b": [3, 0, 0], "velocity_b": [-1, 0, 0],
+            "acceleration_a": None}
+    args[which] = value
+    result, error = call(ccdlab.sphere_sphere_toi, args["position_a"], args["velocity_a"], 0.5, args["position_b"],
+                         args["velocity_b"], 0.5, 4.0, acceleration_a=args["acceleration_a"])
+    if error is not None:
+        refused(error, which)
+        return
+    plain = as_type(value, np.float64)
+    assert plain is not None and plain.shape == (3,) and np.all(np.isfinite(plain)) and isinstance(result, dict)
+
+
+@SETTINGS
+@given(dt=hostile_arrays(ANY_SHAPE), method=st.one_of(st.just("aabb/grid"), hostile_arrays(ANY_SHAPE)))
+def test_results_missed_arguments(dt, method):
+    results = {"records": [{"method": "aabb/grid", "dt": 0.5, "missed": 0, "missed_events": []}]}
+    result, error = call(ccdlab.missed, results, method, dt)
+    if error is not None:
+        assert isinstance(error, ccdlab.InputError), repr(error)
+        assert "method" in str(error) or "dt" in str(error), repr(error)
+        return
+    assert result == []
+
+
+TESTED = {"BroadPhase", "Bound", "Scene", "scene_from_json", "generate", "run", "truth", "mesh_ccd",
+          "scene_from_arrays", "import_frames", "vertex_face_ccd", "edge_edge_ccd", "sphere_sphere_toi", "missed"}
+# Results takes a results document (a dict), not arrays; its methods are missed's (tested above).
+NO_ARRAYS = {"InputError", "Truth", "load_scene", "load_truth", "methods", "generators", "Results"}
 
 
 def test_every_entry_point_is_listed():
