@@ -5,6 +5,11 @@
 // static_polygon, static_enter, static_exit (and static_enter_error, static_exit_error,
 // static_grazing, static_undecided when certified) hold the body-scenery events of a scene with scenery.
 #include "bindings.hpp"
+
+#include <ccd/io/input_error.hpp>
+
+#include <algorithm>
+#include <sstream>
 #include "interruptible.hpp"
 
 #include <ccd/scene/scene_digest.hpp>
@@ -96,6 +101,20 @@ PyTruth make_truth(ccd::TruthFile truth) {
   return t;
 }
 
+/// "<ccdlab.Truth 9 events (2 grazing, 1 undecided), 3 static events, horizon 2 s>".
+std::string truth_repr(const ccd::Truth& t) {
+  const auto count = [](const std::vector<ccd::EventError>& errors, bool ccd::EventError::*flag) {
+    return std::count_if(errors.begin(), errors.end(), [&](const ccd::EventError& e) { return e.*flag; });
+  };
+  std::ostringstream out;
+  out << "<ccdlab.Truth " << t.events.size() << " events";
+  if (!t.errors.empty())
+    out << " (" << count(t.errors, &ccd::EventError::grazing) << " grazing, "
+        << count(t.errors, &ccd::EventError::undecided) << " undecided)";
+  out << ", " << t.static_events.size() << " static events, horizon " << t.horizon << " s>";
+  return out.str();
+}
+
 }  // namespace
 
 void bind_truth(py::module_& m) {
@@ -121,6 +140,7 @@ void bind_truth(py::module_& m) {
       .def_property_readonly("horizon", [](const PyTruth& t) { return t.file->horizon; })
       .def_property_readonly("scene_sha256", [](const PyTruth& t) { return t.file->scene_sha256; })
       .def("__len__", [](const PyTruth& t) { return t.file->events.size(); })
+      .def("__repr__", [](const PyTruth& t) { return truth_repr(*t.file); })
       .def("__iter__", [](const PyTruth& t) { return py::iter(py::make_tuple(t.a, t.b, t.enter, t.exit)); })
       .def(
           "to_json", [](const PyTruth& t) { return to_python(ccd::truth_to_json(*t.file)); },
@@ -131,24 +151,41 @@ void bind_truth(py::module_& m) {
 
   m.def(
       "truth",
-      [](const PyScene& scene, unsigned threads) {
+      [](const PyScene& scene, unsigned threads, const py::object& progress) {
+        if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+          throw ccd::InputError("ccdlab.truth", "progress", "must be callable as progress(done, total), or None");
         std::atomic<bool> cancel{false};
+        std::atomic<std::size_t> done{0}, total{0};
+        std::size_t reported = static_cast<std::size_t>(-1);
+        const auto report = [&] {  // with the GIL, on the calling thread
+          const std::size_t d = done.load(), n = total.load();
+          if (progress.is_none() || n == 0 || d == reported) return;
+          reported = d;
+          progress(d, n);
+        };
         ccd::Truth truth = run_interruptible(
             [&]() {
               ccd::TruthOptions options;
               options.threads = threads;
               options.cancel = &cancel;
+              if (!progress.is_none())
+                options.progress = [&](std::size_t d, std::size_t n) {
+                  total.store(n);
+                  done.store(d);
+                };
               ccd::Truth t = ccd::compute_truth(*scene.motion(), scene.scene().scenery, options);
               t.scene_sha256 = ccd::scene_digest(scene.scene());
               return t;
             },
-            &cancel);
+            &cancel, report);
         return make_truth(std::move(truth));
       },
-      py::arg("scene"), py::arg("threads") = 0,
+      py::arg("scene"), py::arg("threads") = 0, py::arg("progress") = py::none(),
       "The ground truth of the scene, as `ccdlab truth` computes it (threads=0: every core): exact for "
       "spheres, certified brackets with error fields for other shapes, static events with scenery; "
-      "Ctrl-C stops it");
+      "progress(done, total) is called on the calling thread as the work advances (units of the "
+      "truth's own progress, as `ccdlab truth` prints it), at most every 50 ms; Ctrl-C, or an "
+      "exception of progress, stops it");
   m.def(
       "load_truth",
       [](const std::string& path) {

@@ -134,7 +134,7 @@ trap 'interrupted=SIGTERM; exit 143' TERM
 # --- 1. packages and build -------------------------------------------------------------
 "$root/scripts/install-deps.sh" slurm-wlm munge parallel
 pass "packages: slurm-wlm $(dpkg-query -W -f='${Version}' slurm-wlm), munge, parallel installed"
-"$root/scripts/build.sh" >/dev/null
+"$root/scripts/build.sh" --target ccdlab >/dev/null
 [[ -x $ccdlab ]] || abort "build: $ccdlab missing"
 pass "build: $ccdlab"
 

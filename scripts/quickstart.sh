@@ -4,8 +4,8 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
-echo "ccdlab: building (Release) ..." >&2
-"$root/scripts/build.sh" >/dev/null
+echo "ccdlab: building the program (Release; ./scripts/test.sh builds the tests too) ..." >&2
+"$root/scripts/build.sh" --target ccdlab --progress
 build=${CCDLAB_BUILD_DIR:-$root/build}
 mkdir -p "$root/results"
 echo "program: $build/ccdlab  (on PATH: export PATH=\"$build:\$PATH\", or install it: README.md, \"Installing\")"

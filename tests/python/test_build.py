@@ -34,7 +34,13 @@ def test_module_objects_have_no_march_native(commands):
 
 def test_module_is_the_one_of_this_build():
     import ccdlab
-    assert pathlib.Path(ccdlab.__file__).resolve().parent == (BUILD_DIR / "python").resolve()
+    package = (BUILD_DIR / "python" / "ccdlab").resolve()
+    assert pathlib.Path(ccdlab.__file__).resolve().parent == package
+    assert pathlib.Path(ccdlab._ccdlab.__file__).resolve().parent == package
+    # Every .py file of python/ccdlab/ is in the build's package, as it is in the sources.
+    sources = pathlib.Path(__file__).resolve().parents[2] / "python" / "ccdlab"
+    for py in sources.glob("*.py"):
+        assert (package / py.name).read_bytes() == py.read_bytes(), py.name
 
 
 def test_cmake_install_puts_it_where_python3_finds_it(tmp_path):
@@ -44,6 +50,6 @@ def test_cmake_install_puts_it_where_python3_finds_it(tmp_path):
     subprocess.run([cmake, "--install", str(BUILD_DIR), "--prefix", str(tmp_path)], check=True, capture_output=True)
     site = tmp_path / f"lib/python{sys.version_info.major}.{sys.version_info.minor}/dist-packages"
     env = dict(os.environ, PYTHONPATH=str(site))
-    where = subprocess.run(["/usr/bin/python3", "-c", "import ccdlab; print(ccdlab.__file__); print(len(ccdlab.methods()['methods']))"],
+    where = subprocess.run(["/usr/bin/python3", "-c", "import ccdlab; print(ccdlab._ccdlab.__file__); print(len(ccdlab.methods()['methods']))"],
                            env=env, capture_output=True, text=True, check=True, cwd=tmp_path).stdout.split()
-    assert pathlib.Path(where[0]).parent == site and int(where[1]) > 0
+    assert pathlib.Path(where[0]).parent == site / "ccdlab" and int(where[1]) > 0
