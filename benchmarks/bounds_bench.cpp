@@ -76,6 +76,8 @@ void bm_bound(benchmark::State& state, std::string spec, double h) {
   ctx.exact = bs.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.acceleration_bound = s.scene.max_acceleration();
   ctx.walls = s.scene.box;
+  const ccd::RigidMotion motion(s.scene, s.traj);
+  ctx.motion = &motion;
   std::vector<ccd::Aabb> boxes;
   bound->prepare(ctx, boxes);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> cand;

@@ -171,8 +171,10 @@ void pipeline(benchmark::State& state, const char* bound_name, bool scalar_narro
   ctx.start = s.start;
   ctx.exact = spec.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.acceleration_bound = 0.0;  // linear motion: the true bound
+  const ccd::RigidMotion motion(s.scene, s.traj);
+  ctx.motion = &motion;
   ccd::StepResult step;
-  for (auto _ : state) step_pipeline.run(ctx, s.traj, step, nullptr, s.piece);
+  for (auto _ : state) step_pipeline.run(ctx, step, nullptr, s.piece);
   state.counters["candidates"] = static_cast<double>(step.candidates.size());
   state.counters["passed"] = static_cast<double>(step.passed.size());
   state.counters["confirmed"] = static_cast<double>(step.contacts.size());
@@ -181,18 +183,20 @@ void pipeline(benchmark::State& state, const char* bound_name, bool scalar_narro
 // The narrow phase alone on the pairs that pass the capsule bound in one step.
 void narrow(benchmark::State& state, bool batched) {
   const PipelineScene& s = pipeline_scene();
-  static const std::vector<ccd::BodyPair> passed = [&s] {
+  const ccd::RigidMotion motion(s.scene, s.traj);
+  static const std::vector<ccd::BodyPair> passed = [&s, &motion] {
     const ccd::BoundSpec spec = ccd::parse_bound("capsule");
     ccd::StepPipeline step_pipeline(spec.make(), spec.info->knowledge, std::make_unique<ccd::UniformGrid>());
     ccd::StepContext ctx;
     ctx.t1 = ccdlab::bench::PeerScene::kDt;
     ctx.start = s.start;
     ctx.exact = &s.traj;
+    ctx.motion = &motion;
     ccd::StepResult step;
-    step_pipeline.run(ctx, s.traj, step, nullptr, s.piece);
+    step_pipeline.run(ctx, step, nullptr, s.piece);
     return step.passed;
   }();
-  const ccd::NarrowInput in{&s.traj, s.start, s.piece, 0.0, ccdlab::bench::PeerScene::kDt, false};
+  const ccd::NarrowInput in{&motion, s.start, s.piece, 0.0, ccdlab::bench::PeerScene::kDt, false};
   std::vector<ccd::ContactResult> out(passed.size());
   for (auto _ : state) {
     if (batched) {

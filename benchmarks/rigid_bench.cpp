@@ -79,8 +79,7 @@ void ca_spinning_stick(benchmark::State& state) {
   const ccd::Trajectories traj(s);
   const ccd::RigidMotion motion(s, traj);
   ccd::NarrowInput in;
-  in.motion = &traj;
-  in.rigid = &motion;
+  in.motion = &motion;
   in.t0 = 0.0;
   in.t1 = 1.0;
   std::size_t hits = 0;

@@ -61,8 +61,9 @@ ccd::Scene make_scene(int n, double fraction, double speed, int bullets, double 
 
 struct Fixture {
   ccd::Scene scene;
-  ccd::Trajectories motion;
-  explicit Fixture(ccd::Scene s) : scene(std::move(s)), motion(scene) {}
+  ccd::Trajectories centres;
+  ccd::RigidMotion motion;
+  explicit Fixture(ccd::Scene s) : scene(std::move(s)), centres(scene), motion(scene, centres) {}
 };
 
 const Fixture& sparse_gas() {

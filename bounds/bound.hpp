@@ -8,6 +8,7 @@
 #include <bounds/volume.hpp>
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/motion/body_state.hpp>
+#include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
 #include <ccd/scene/scenery.hpp>
@@ -20,8 +21,6 @@
 #include <vector>
 
 namespace ccd {
-
-class RigidMotion;
 
 /// What a bound may know about a body at the start of a step.
 enum class Knowledge {
@@ -71,13 +70,16 @@ struct StepContext {
   double t0 = 0.0;                       ///< step start (the sample time for Instant bounds)
   double t1 = 0.0;                       ///< step end (== t0 for Instant bounds)
   std::span<const BodyState> start;      ///< every body's state at t0 (always given)
-  const Trajectories* exact = nullptr;   ///< the true motion: given only to Exact bounds
+  /// The true motion, given only to Exact bounds: &motion->centres() for them, else null.
+  const Trajectories* exact = nullptr;
   double acceleration_bound = 0.0;       ///< A for Bounded bounds
   std::optional<WallBox> walls;          ///< the scene's static walls (known to every bound)
-  /// Shapes and prescribed spin of a scene with non-sphere bodies (ccd/motion/rigid_motion.hpp);
-  /// null for sphere scenes. The orientation-aware bounds (frame_aabb, obb, obb_sat) read it;
-  /// every other bound sees each body as its enclosing sphere (BodyState::radius).
-  const RigidMotion* rigid = nullptr;
+  /// Required: the scene's motion (ccd/motion/rigid_motion.hpp), the same object the
+  /// narrow phase reads. Every bound may ask it for the bodies' shapes and spin (the
+  /// orientation-aware bounds frame_aabb, obb, obb_sat do; every other bound sees each
+  /// body as its enclosing sphere, BodyState::radius). Its centres' trajectories are the
+  /// exact motion: only an Exact bound reads them, through `exact`.
+  const RigidMotion* motion = nullptr;
   /// Optional, with `exact`: each body's piece index at t0 in `exact` (StateCursor::pieces:
   /// the later piece at a break, as Trajectories::piece_index), so that the bounds built
   /// from the pieces walk from it instead of searching. Empty: they search.

@@ -11,10 +11,10 @@ void FrameAabbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
   for (std::size_t i = 0; i < n; ++i) {
     const BodyState& s = ctx.start[i];
     const double slack = rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius);
-    if (!ctx.rigid || ctx.rigid->kind(i) == ShapeKind::Sphere) {
+    if (ctx.motion->kind(i) == ShapeKind::Sphere) {
       boxes[i] = Aabb::around(s.position, s.radius + slack);
     } else {
-      boxes[i] = rotated_box(ctx.rigid->proxy(i), body_rotation(*ctx.rigid, i, ctx.t0), s.position);
+      boxes[i] = rotated_box(ctx.motion->proxy(i), body_rotation(*ctx.motion, i, ctx.t0), s.position);
       grow(boxes[i], slack);
     }
   }

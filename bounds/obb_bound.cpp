@@ -13,13 +13,13 @@ void ObbBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
     const BodyState& s = ctx.start[i];
     const double slack = rounding_slack(s.position.cwiseAbs().maxCoeff() + s.radius);
     OrientedBox& o = obbs_[i];
-    if (!ctx.rigid || ctx.rigid->kind(i) == ShapeKind::Sphere) {
+    if (ctx.motion->kind(i) == ShapeKind::Sphere) {
       o.centre = s.position;
       o.axes.setIdentity();
       o.half = Vec3::Constant(s.radius + slack);
     } else {
-      const LocalBox local = local_box(ctx.rigid->proxy(i));
-      o.axes = body_rotation(*ctx.rigid, i, ctx.t0);
+      const LocalBox local = local_box(ctx.motion->proxy(i));
+      o.axes = body_rotation(*ctx.motion, i, ctx.t0);
       o.centre = s.position + o.axes * local.centre;
       o.half = local.half.array() + slack;
     }

@@ -39,9 +39,9 @@ void ObbSatBound::resize(std::size_t n) {
 
 Aabb ObbSatBound::build(const StepContext& ctx, std::size_t i) {
   const Trajectories& tr = *ctx.exact;
-  const bool turns = ctx.rigid && ctx.rigid->kind(i) != ShapeKind::Sphere;
+  const bool turns = ctx.motion->kind(i) != ShapeKind::Sphere;
   LocalBox local{Vec3::Zero(), Vec3::Constant(tr.radius(i))};
-  if (turns) local = local_box(ctx.rigid->proxy(i));
+  if (turns) local = local_box(ctx.motion->proxy(i));
   const double R = tr.radius(i);  // the enclosing radius
   double* t = times_.data() + i * (m_ + 1);
   for (int j = 0; j <= m_; ++j) t[j] = j == m_ ? ctx.t1 : ctx.t0 + (ctx.t1 - ctx.t0) * j / m_;
@@ -59,12 +59,12 @@ Aabb ObbSatBound::build(const StepContext& ctx, std::size_t i) {
     OrientedBox& o = obbs_[i * m_ + j];
     double growth = 0.0;
     if (turns) {
-      o.axes = body_rotation(*ctx.rigid, i, mid);
-      const double omega = ctx.rigid->rotations().empty() ? 0.0 : ctx.rigid->rotations().max_omega(i, s0, s1);
+      o.axes = body_rotation(*ctx.motion, i, mid);
+      const double omega = ctx.motion->rotations().empty() ? 0.0 : ctx.motion->rotations().max_omega(i, s0, s1);
       const double theta = std::min(omega * std::max(mid - s0, s1 - mid), 2.0);
       // A free tumble's orientation at `mid` is evaluated within a stated error (0 for
       // constant spins): every point may be that much further out.
-      growth = theta * R * (1.0 + 16.0 * kEps) + ctx.rigid->pose_error(i, mid);
+      growth = theta * R * (1.0 + 16.0 * kEps) + ctx.motion->pose_error(i, mid);
     } else {
       o.axes.setIdentity();
     }

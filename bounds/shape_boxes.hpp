@@ -1,8 +1,8 @@
 #pragma once
 // Boxes around a body's shape for the orientation-aware bounds (frame_aabb, obb, obb_sat):
 // the shape is its ConvexProxy (ccd/shape/convex_proxy.hpp), points grown by a radius, in
-// the body frame whose origin is the centre of rotation. Without a RigidMotion (sphere
-// scenes) a body is the ball of its enclosing radius about its centre.
+// the body frame whose origin is the centre of rotation. A body of kind Sphere is the ball
+// of its enclosing radius about its centre.
 #include <ccd/geometry/aabb.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 
@@ -27,8 +27,9 @@ Aabb rotated_box(const ConvexProxy& proxy, const Mat3& rotation, const Vec3& cen
 
 /// The orientation of `body` at time t (body to world): the identity when the scene has no
 /// spinning shapes.
-inline Mat3 body_rotation(const RigidMotion& rigid, std::size_t body, double t) {
-  return rigid.rotations().empty() ? Mat3::Identity() : Mat3(rigid.rotations().orientation(body, t).toRotationMatrix());
+inline Mat3 body_rotation(const RigidMotion& motion, std::size_t body, double t) {
+  return motion.rotations().empty() ? Mat3::Identity()
+                                    : Mat3(motion.rotations().orientation(body, t).toRotationMatrix());
 }
 
 /// Grows a box by `d` on every side.

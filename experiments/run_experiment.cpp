@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <cstdio>
 #include <set>
 #include <sstream>
@@ -151,15 +150,12 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   topts.progress = [&progress](std::size_t done, std::size_t total) {
     progress.advance("candidate pairs solved", done, total);
   };
-  // Scenes with non-sphere shapes: the rigid motion for the narrow phase; sphere scenes
-  // keep the exact path untouched. The truth takes the scene's motion in every case.
-  std::optional<ccd::RigidMotion> rigid;
-  if (scene.has_non_spheres()) rigid.emplace(scene, traj);
+  // The scene's motion: the truth and every method take it.
+  const ccd::RigidMotion motion(scene, traj);
   // The stored truth (its static events too, when it has them), else one computed truth.
   ccd::Truth computed;
   const bool stored_complete = options.truth && (scene.scenery.empty() || options.truth->has_scenery);
   if (!stored_complete) {
-    const ccd::RigidMotion motion(scene, traj);
     computed = ccd::compute_truth(motion, scene.scenery, topts);
     if (computed.stats.cancelled) return json();
   }
@@ -181,8 +177,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
 
   RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
-  in.rigid = rigid ? &*rigid : nullptr;
+  in.motion = &motion;
   in.truth = &truth;
   in.truth_error = truth_error;
   in.errors = body_truth.errors;

@@ -76,13 +76,13 @@ void match_contact(const RunInput& in, bool continuous, ccd::BodyPair p, const c
       // at the step's start from an earlier event) is detected at its own start, where
       // the same signed distance is evaluated.
       const double at = continuous ? std::max(when, ev.enter) : when;
-      // Rigid pairs: the narrow phase's bound at its own time (the sphere formula would
+      // Shaped pairs: the narrow phase's bound at its own time (the sphere formula would
       // measure the enclosing spheres).
-      const bool spheres = !in.rigid || (in.rigid->kind(p.a) == ccd::ShapeKind::Sphere &&
-                                         in.rigid->kind(p.b) == ccd::ShapeKind::Sphere);
+      const bool spheres = in.motion->kind(p.a) == ccd::ShapeKind::Sphere &&
+                           in.motion->kind(p.b) == ccd::ShapeKind::Sphere;
       const double signed_distance = at == when || !spheres
                                          ? contact.signed_distance
-                                         : ccd::sphere_signed_distance(*in.trajectories, p.a, p.b, at);
+                                         : ccd::sphere_signed_distance(in.motion->centres(), p.a, p.b, at);
       c.lag[e] = std::max(0.0, at - ev.enter);
       c.penetration[e] = std::max(0.0, -signed_distance);
     }
@@ -156,8 +156,7 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   scheduler->set_scenery(in.scene->scenery);
   ContactMatcher matcher(in, method.continuous(), c);
   ccd::ScheduleInput input;
-  input.motion = in.trajectories;
-  input.rigid = in.rigid;
+  input.motion = in.motion;
   input.horizon = in.scene->horizon;
   input.acceleration_bound = in.acceleration_bound;
   input.walls = in.scene->box;

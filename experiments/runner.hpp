@@ -37,10 +37,9 @@ namespace ccdlab {
 
 struct RunInput {
   const ccd::Scene* scene = nullptr;
-  const ccd::Trajectories* trajectories = nullptr;
-  /// Shapes and spin (ccd/motion/rigid_motion.hpp) of a scene with non-sphere bodies;
-  /// null for sphere scenes (the narrow phase is then sphere x sphere throughout).
-  const ccd::RigidMotion* rigid = nullptr;
+  /// Required: the scene's motion (centres, shapes, spin; ccd/motion/rigid_motion.hpp), the
+  /// one every stage of the method takes.
+  const ccd::RigidMotion* motion = nullptr;
   const TruthIndex* truth = nullptr;
   /// The truth's body-static events (ccd/truth/static_truth.hpp); empty without scenery.
   std::span<const ccd::StaticEvent> static_events;

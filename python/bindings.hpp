@@ -1,6 +1,7 @@
 #pragma once
 // The pieces of the `ccdlab` Python module (module.cpp puts them together). Each
 // bind_* function adds one concept's classes and functions to the module.
+#include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
 
@@ -18,8 +19,8 @@ namespace ccdlab::python {
 
 namespace py = pybind11;
 
-/// A scene and, built on first use, its exact trajectories (shared with the bounds that
-/// were prepared on it).
+/// A scene and, built on first use, its motion: the exact trajectories and the shapes and
+/// spin on them (shared with the bounds that were prepared on it).
 class PyScene {
  public:
   explicit PyScene(ccd::Scene scene, std::string source)
@@ -28,12 +29,16 @@ class PyScene {
   const std::string& source() const { return source_; }
   /// The exact motion; built once (walls solved), safe to call without the GIL.
   std::shared_ptr<const ccd::Trajectories> trajectories() const;
+  /// The scene's motion (centres = trajectories(), shapes, spin); built once, safe to call
+  /// without the GIL. It keeps the trajectories alive.
+  std::shared_ptr<const ccd::RigidMotion> motion() const;
 
  private:
   ccd::Scene scene_;
   std::string source_;  ///< a file name, or "ccdlab.generate(NAME)", for error messages
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const ccd::Trajectories> trajectories_;
+  mutable std::shared_ptr<const ccd::RigidMotion> motion_;
 };
 
 /// A numpy array that owns `values` (moved, not copied), with the given shape.

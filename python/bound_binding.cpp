@@ -1,5 +1,6 @@
 // ccdlab.Bound: any bound of the registry. prepare(scene, t0, t1) evaluates every body's
-// state at t0 and returns the bound's boxes as an (n, 2, 3) array that owns the bound's own
+// state at t0 and gives the bound the scene's motion (its shapes and spin too, which the
+// orientation-aware bounds read), and returns the bound's boxes as an (n, 2, 3) array that owns the bound's own
 // output (no copy), ready for BroadPhase.find_pairs; test_pairs(pairs) runs the bound's
 // pair test on an (m, 2) array of pairs.
 #include "bindings.hpp"
@@ -38,14 +39,15 @@ class PyBound {
     {
       py::gil_scoped_release release;
       std::lock_guard lock(mutex_);
-      motion_ = scene->trajectories();
+      motion_ = scene->motion();
       scene_ = scene;
-      ccd::StateCursor(*motion_).evaluate(t0, states_);
+      ccd::StateCursor(motion_->centres()).evaluate(t0, states_);
       ccd::StepContext ctx;
       ctx.t0 = t0;
       ctx.t1 = t1;
       ctx.start = states_;
-      if (spec_.info->knowledge == ccd::Knowledge::Exact) ctx.exact = motion_.get();
+      ctx.motion = motion_.get();
+      if (spec_.info->knowledge == ccd::Knowledge::Exact) ctx.exact = &motion_->centres();
       ctx.acceleration_bound = acceleration_bound.value_or(scene->scene().max_acceleration());
       ctx.walls = scene->scene().box;
       bound_->prepare(ctx, boxes);
@@ -92,7 +94,7 @@ class PyBound {
   ccd::BoundSpec spec_;
   std::unique_ptr<ccd::Bound> bound_;
   std::shared_ptr<PyScene> scene_;  // what the last prepare saw
-  std::shared_ptr<const ccd::Trajectories> motion_;
+  std::shared_ptr<const ccd::RigidMotion> motion_;
   std::vector<ccd::BodyState> states_;
   std::mutex mutex_;
 };

@@ -25,6 +25,17 @@ std::shared_ptr<const ccd::Trajectories> PyScene::trajectories() const {
   return trajectories_;
 }
 
+std::shared_ptr<const ccd::RigidMotion> PyScene::motion() const {
+  std::shared_ptr<const ccd::Trajectories> centres = trajectories();
+  std::lock_guard lock(mutex_);
+  if (!motion_) {
+    // The motion refers to the trajectories: the deleter keeps them alive with it.
+    auto* m = new ccd::RigidMotion(scene_, *centres);
+    motion_ = std::shared_ptr<const ccd::RigidMotion>(m, [centres](const ccd::RigidMotion* p) { delete p; });
+  }
+  return motion_;
+}
+
 namespace {
 
 // One Vec3 per body, as an (n, 3) array.

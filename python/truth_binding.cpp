@@ -173,8 +173,7 @@ void bind_truth(py::module_& m) {
                   total.store(n);
                   done.store(d);
                 };
-              const ccd::RigidMotion motion(scene.scene(), *scene.trajectories());
-              ccd::Truth t = ccd::compute_truth(motion, scene.scene().scenery, options);
+              ccd::Truth t = ccd::compute_truth(*scene.motion(), scene.scene().scenery, options);
               t.scene_sha256 = ccd::scene_digest(scene.scene());
               return t;
             },

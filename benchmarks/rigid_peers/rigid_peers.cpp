@@ -290,8 +290,7 @@ int main(int argc, char** argv) {
     const ccd::NarrowTable& table = ccd::narrow_table();
     auto run_ccdlab = [&](const Query& q) {
       ccd::NarrowInput in;
-      in.motion = &traj;
-      in.rigid = &motion;
+      in.motion = &motion;
       in.t0 = q.t0;
       in.t1 = q.t1;
       const ccd::ContactResult r = table.find(motion.kind(q.a), motion.kind(q.b))(in, q.a, q.b);

@@ -23,14 +23,28 @@ RigidMotion::RigidMotion(const Scene& scene, const Trajectories& centres)
       proxy_radius_.push_back(s.proxy().radius);
     }
   }
+  classify();
 }
 
-RigidMotion::RigidMotion(const Trajectories& centres) : centres_(&centres) {
-  points_.push_back({Vec3::Zero()});
+// A body of kind Sphere is the ball of its radius about its centre (its proxy is the one
+// point at the origin: ccd/shape/shape.hpp), the radius its enclosing radius.
+void RigidMotion::classify() {
+  spheres_ = rotations_.empty() &&
+             std::all_of(kinds_.begin(), kinds_.end(), [](ShapeKind k) { return k == ShapeKind::Sphere; });
+}
+
+RigidMotion::RigidMotion(const Trajectories& centres) { assign_spheres(centres); }
+
+void RigidMotion::assign_spheres(const Trajectories& centres) {
+  centres_ = &centres;
+  rotations_.clear();
+  points_.resize(1);
+  points_[0].assign(1, Vec3::Zero());
   kinds_.assign(centres.size(), ShapeKind::Sphere);
   point_set_.assign(centres.size(), 0);
-  proxy_radius_.reserve(centres.size());
+  proxy_radius_.clear();
   for (std::size_t i = 0; i < centres.size(); ++i) proxy_radius_.push_back(centres.radius(i));
+  spheres_ = true;
 }
 
 void RigidMotion::assign_images(const RigidMotion& source, const Trajectories& centres,
@@ -46,6 +60,7 @@ void RigidMotion::assign_images(const RigidMotion& source, const Trajectories& c
     point_set_.push_back(source.point_set_[o]);
     proxy_radius_.push_back(source.proxy_radius_[o]);
   }
+  spheres_ = source.spheres_;
 }
 
 ConvexProxy RigidMotion::proxy(std::size_t body) const {

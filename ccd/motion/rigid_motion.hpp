@@ -1,9 +1,11 @@
 #pragma once
-// What the generic narrow phase and the rigid ground truth may ask about a body: its
-// shape (kind and ConvexProxy), its pose at a time (centre from the exact trajectories,
-// orientation from the prescribed rotations), and a bound on the speed of its points.
-// Built once per scene; for a sphere-only scene it holds no rotations (every body is a
-// ball about its centre).
+// The scene's motion: what every stage may ask about a body (the bounds, the narrow
+// phase, the schedulers, the runner and the ground truth all take this one object): its
+// centre's exact trajectory (`centres()`), its shape (kind and ConvexProxy), its pose at a
+// time (orientation from the prescribed or free spin), and a bound on the speed of its
+// points. Always built, once per scene; for a scene of plain spheres it holds no rotations
+// (every body is a ball about its centre) and `spheres()` says so, so that a stage decides
+// once per step, not per pair, that the sphere x sphere path serves every pair.
 #include <ccd/motion/rotation.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/scene/scene.hpp>
@@ -32,8 +34,11 @@ class RigidMotion {
   /// Every body of `centres` a ball of its radius, with no rotations (a scene of plain
   /// spheres). `centres` must outlive this object.
   explicit RigidMotion(const Trajectories& centres);
-  /// No bodies yet (for assign_images).
+  /// No bodies yet (for assign_images, assign_spheres).
   RigidMotion() = default;
+  /// Makes this the motion of `centres`' bodies as plain spheres (the constructor from
+  /// trajectories, reusing this object's storage). `centres` must outlive this object's use.
+  void assign_spheres(const Trajectories& centres);
   /// Makes this the motion of the local bodies of one step [t0, t1] of a scene that wraps
   /// around (ccd/pipeline/periodic_images.hpp): body i is `source`'s body owner[i] (its
   /// shape and spin; the spin pieces that overlap [t0, t1], so every query inside the step
@@ -43,6 +48,10 @@ class RigidMotion {
                      double t0, double t1);
 
   std::size_t size() const { return kinds_.size(); }
+  /// true when every body is a ball of its enclosing radius about its centre and nothing
+  /// spins (no shapes, no rotations): the sphere x sphere narrow entry answers every pair
+  /// and every orientation-aware bound sees balls.
+  bool spheres() const { return spheres_; }
   const Trajectories& centres() const { return *centres_; }
   const Rotations& rotations() const { return rotations_; }
   ShapeKind kind(std::size_t body) const { return kinds_[body]; }
@@ -68,6 +77,8 @@ class RigidMotion {
   std::vector<std::vector<Vec3>> points_;  ///< per shape of the scene, then one origin
   std::vector<std::uint32_t> point_set_;   ///< per body: index into points_
   std::vector<double> proxy_radius_;       ///< per body
+  bool spheres_ = true;
+  void classify();  ///< sets spheres_ from the kinds and rotations
 };
 
 }  // namespace ccd

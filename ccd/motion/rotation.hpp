@@ -74,6 +74,11 @@ class Rotations {
   /// bodies and periodic images of one step, ccd/pipeline/periodic_images.hpp). Empty when
   /// `source` is. Reuses the storage.
   void assign_owners(const Rotations& source, std::span<const std::uint32_t> owner, double t0, double t1);
+  /// Empty again (no bodies turn), keeping the storage.
+  void clear() {
+    pieces_.clear();
+    first_.assign(1, 0);
+  }
 
  private:
   std::vector<RotationPiece> pieces_;

@@ -7,7 +7,7 @@
 namespace ccd {
 
 ContactResult body_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
-  if (!in.rigid || in.rigid->kind(body) == ShapeKind::Sphere) return sphere_polygon_narrow(in, body, polygon);
+  if (in.motion->kind(body) == ShapeKind::Sphere) return sphere_polygon_narrow(in, body, polygon);
   return conservative_advancement_fixed(in, body, polygon_proxy(polygon));
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // The narrow phase of a moving body against a static polygon (ccd/scene/scenery.hpp), by
 // the body's shape:
-//  - a sphere (no rigid motion, or kind Sphere, spinning or not): the exact sphere-polygon
+//  - a sphere (kind Sphere, spinning or not): the exact sphere-polygon
 //    entry (ccd/narrow/sphere_polygon_narrow.hpp), toi_error 0;
 //  - any other shape: the generic entry of the body-body rigid pairs, conservative
 //    advancement (ccd/narrow/conservative_advancement.hpp) against the polygon as a convex

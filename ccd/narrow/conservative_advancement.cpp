@@ -332,7 +332,7 @@ ContactResult advance_pair(const NarrowInput& in, const BodyStep& sa, const Body
 
 ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, std::uint32_t b,
                                        const AdvancementOptions& options, int* iterations) {
-  const RigidMotion& m = *in.rigid;
+  const RigidMotion& m = *in.motion;
   const BodyStep sa(m, a, in.t0, in.t1), sb(m, b, in.t0, in.t1);
   const double mu = m.max_point_speed(a, in.t0, in.t1) + m.max_point_speed(b, in.t0, in.t1);
   return advance_pair(in, sa, sb, mu, options, iterations);
@@ -340,7 +340,7 @@ ContactResult conservative_advancement(const NarrowInput& in, std::uint32_t a, s
 
 ContactResult conservative_advancement_fixed(const NarrowInput& in, std::uint32_t body, const ConvexProxy& fixed,
                                              const AdvancementOptions& options, int* iterations) {
-  const RigidMotion& m = *in.rigid;
+  const RigidMotion& m = *in.motion;
   const BodyStep sa(m, body, in.t0, in.t1), sb(fixed);
   return advance_pair(in, sa, sb, m.max_point_speed(body, in.t0, in.t1), options, iterations);
 }

@@ -2,7 +2,7 @@
 // The generic narrow-phase entry for any pair of convex shapes (ccd/narrow/narrow_table.hpp):
 // conservative advancement (Mirtich) on the certified GJK distance
 // (ccd/queries/convex_distance.hpp), over the rigid motion of the two bodies
-// (ccd/motion/rigid_motion.hpp; NarrowInput::rigid must be set).
+// (NarrowInput::motion, ccd/motion/rigid_motion.hpp).
 //
 // Step query [t0, t1]: with mu = max_point_speed(a) + max_point_speed(b) over the step,
 // the distance cannot shrink faster than mu. At a time t GJK certifies a gap of at least

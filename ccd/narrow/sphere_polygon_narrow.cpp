@@ -17,7 +17,7 @@ double signed_distance_at(const Trajectories& motion, std::uint32_t body, const 
 
 ContactResult sphere_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
   ContactResult out;
-  const Trajectories& motion = *in.motion;
+  const Trajectories& motion = in.motion->centres();
   if (in.sample) {
     const double d = signed_distance_at(motion, body, polygon, in.t0);
     if (d <= 0.0) {

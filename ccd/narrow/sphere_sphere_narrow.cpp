@@ -7,7 +7,7 @@ namespace ccd {
 
 ContactResult sphere_sphere_narrow(const NarrowInput& in, std::uint32_t a, std::uint32_t b) {
   ContactResult r;
-  const Trajectories& m = *in.motion;
+  const Trajectories& m = in.motion->centres();
   if (in.sample) {
     const bool touch = in.start_piece.empty() ? in_contact(m, a, b, in.t0)
                                               : in_contact(m, a, in.start_piece[a], b, in.start_piece[b], in.t0);

@@ -44,7 +44,7 @@ std::ptrdiff_t single_piece(const Trajectories& m, std::span<const std::size_t> 
 
 void sphere_sphere_narrow_batch(const NarrowInput& in, std::span<const BodyPair> pairs, std::span<ContactResult> out) {
   if (out.size() != pairs.size()) throw std::invalid_argument("sphere_sphere_narrow_batch: out.size() != pairs.size()");
-  const Trajectories& m = *in.motion;
+  const Trajectories& m = in.motion->centres();
   const double u0 = in.t0, u1 = in.t1;
   if (in.sample || m.periodic() || !(u1 >= u0)) {
     for (std::size_t i = 0; i < pairs.size(); ++i) out[i] = sphere_sphere_narrow(in, pairs[i].a, pairs[i].b);

@@ -41,6 +41,8 @@ void EarliestRun::build_slots(const std::vector<std::uint32_t>& slots, double t)
     group_.assign(slots.begin() + static_cast<std::ptrdiff_t>(b), slots.begin() + static_cast<std::ptrdiff_t>(e));
     ctx_.t1 = end;
     const Trajectories& view = images_.view(group_, t, end);
+    slot_motion_.assign_spheres(view);  // a wrapped run has plain spheres only
+    ctx_.motion = &slot_motion_;
     ctx_.exact = s_.knowledge == Knowledge::Exact ? &view : nullptr;
     ctx_.start = states_;
     s_.bound.refresh(ctx_, group_, boxes_);

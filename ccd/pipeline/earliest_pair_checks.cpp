@@ -70,7 +70,9 @@ void EarliestRun::refine_pair(const Check& c) {
     pair_states_[0] = states_[c.a];
     pair_states_[1] = states_[c.b];
     const Trajectories& pv = images_.pair_view(c.a, c.b, c.t, to);
+    pair_motion_.assign_spheres(pv);  // a wrapped run has plain spheres only
     StepContext pc = ctx_;
+    pc.motion = &pair_motion_;
     pc.t0 = c.t;
     pc.t1 = to;
     pc.start = pair_states_;
@@ -110,15 +112,15 @@ void EarliestRun::decide(const Check& c) {
 
 // The narrow phase of a check's pair (wrapped: the two slots' paths) over [from, until].
 ContactResult EarliestRun::narrow_pair(std::uint32_t x, std::uint32_t y, double from, double until) {
-  const RigidMotion* rigid = in_.rigid;
-  if (wrapped_) {
+  if (wrapped_) {  // plain spheres only: the sphere x sphere entry
     pair_states_[0] = states_[x];
     pair_states_[1] = states_[y];
-    const NarrowInput in{&images_.pair_view(x, y, from, until), pair_states_, {}, from, until, false, nullptr};
+    pair_motion_.assign_spheres(images_.pair_view(x, y, from, until));
+    const NarrowInput in{&pair_motion_, pair_states_, {}, from, until, false};
     return s_.narrow(in, 0, 1);
   }
-  const NarrowInput in{&motion_, states_, {}, from, until, false, rigid};
-  return rigid ? s_.table.find(rigid->kind(x), rigid->kind(y))(in, x, y) : s_.narrow(in, x, y);
+  const NarrowInput in{in_.motion, states_, {}, from, until, false};
+  return spheres_ ? s_.narrow(in, x, y) : s_.table.find(in_.motion->kind(x), in_.motion->kind(y))(in, x, y);
 }
 
 // A narrow call over [from, until]; a found contact is reported over [from, to] and ends

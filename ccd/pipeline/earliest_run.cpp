@@ -13,11 +13,12 @@ namespace ccd::earliest {
 EarliestRun::EarliestRun(const Setup& setup, const ScheduleInput& in, ScheduleResult& out)
     : s_(setup),
       in_(in),
-      motion_(*in.motion),
+      motion_(in.motion->centres()),
       stats_(out.stats),
       contacts_(out.contacts),
       static_contacts_(out.static_contacts),
-      wrapped_(in.motion->periodic() != nullptr),
+      wrapped_(in.motion->centres().periodic() != nullptr),
+      spheres_(in.motion->spheres()),
       n_(in.motion->size()),
       dt_(setup.options.window),
       T_(in.horizon),
@@ -30,7 +31,7 @@ EarliestRun::EarliestRun(const Setup& setup, const ScheduleInput& in, ScheduleRe
       version_(in.motion->size(), 0),
       ends_(in.motion->size(), 0.0),
       pair_states_(2) {
-  if (wrapped_ && in.rigid)
+  if (wrapped_ && !in.motion->spheres())
     throw std::invalid_argument("the earliest scheduler takes plain spheres only in a scene that wraps around");
   if (wrapped_ && !s_.scenery.empty())
     throw std::invalid_argument("the earliest scheduler takes no scenery in a scene that wraps around");
@@ -38,7 +39,7 @@ EarliestRun::EarliestRun(const Setup& setup, const ScheduleInput& in, ScheduleRe
   ctx_.acceleration_bound = in.acceleration_bound;
   ctx_.walls = in.walls;
   ctx_.exact = s_.knowledge == Knowledge::Exact ? &motion_ : nullptr;
-  ctx_.rigid = in.rigid;
+  ctx_.motion = in.motion;
   if (wrapped_) {
     images_.begin(motion_);
     boxes_.resize(n_);

@@ -72,11 +72,12 @@ class EarliestRun {
 
   const Setup& s_;
   const ScheduleInput& in_;
-  const Trajectories& motion_;
+  const Trajectories& motion_;  // in_.motion's centres
   ScheduleStats& stats_;
   std::vector<ScheduledContact>& contacts_;
   std::vector<ScheduledStaticContact>& static_contacts_;
   const bool wrapped_;  // bodies and their images as slots (ccd/pipeline/scheduler_images.hpp)
+  const bool spheres_;  // plain spheres (RigidMotion::spheres): one narrow entry for every pair
   const std::size_t n_;
   const double dt_, T_;
   const double stale_age_;
@@ -114,6 +115,7 @@ class EarliestRun {
   };
   SchedulerImages images_;
   std::vector<BodyState> pair_states_;
+  RigidMotion slot_motion_, pair_motion_;  // plain spheres over a view of slots, of two slots
   std::vector<ImagePair> image_pairs_;
   std::vector<std::uint32_t> image_slots_, freed_, moved_;
   // Scenery: the index's polygons for one box, and the (body, polygon) pairs of a refresh.

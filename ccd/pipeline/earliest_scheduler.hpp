@@ -133,7 +133,8 @@ class EarliestScheduler final : public Scheduler {
 
   /// Runs over [0, in.horizon] (Scheduler::run); the contacts are in the order the narrow
   /// calls ran (a pair's contacts in time order). A scene that wraps around
-  /// (motion.periodic()) takes plain spheres only (std::invalid_argument with `in.rigid`) and
+  /// (periodic centres) takes plain spheres only (std::invalid_argument unless
+  /// in.motion->spheres()) and
   /// no scenery. The run itself is ccd/pipeline/earliest_run.hpp.
   bool run(const ScheduleInput& in, ScheduleResult& out) override;
 

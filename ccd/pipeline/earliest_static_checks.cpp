@@ -96,7 +96,7 @@ void EarliestRun::decide_static(const Check& c) {
 // conservative advancement for another shape).
 ContactResult EarliestRun::narrow_static(std::uint32_t i, std::uint32_t polygon, double from, double until) {
   ++stats_.static_narrow_calls;
-  const NarrowInput in{&motion_, states_, {}, from, until, false, in_.rigid};
+  const NarrowInput in{in_.motion, states_, {}, from, until, false};
   return body_polygon_narrow(in, i, s_.scenery[polygon]);
 }
 

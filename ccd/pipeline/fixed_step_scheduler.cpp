@@ -36,7 +36,7 @@ FixedStepScheduler::FixedStepScheduler(std::unique_ptr<Bound> bound, Knowledge k
 void FixedStepScheduler::set_scenery(std::span<const StaticPolygon> polygons) { pipeline_.set_scenery(polygons); }
 
 bool FixedStepScheduler::run(const ScheduleInput& in, ScheduleResult& out) {
-  const Trajectories& motion = *in.motion;
+  const Trajectories& motion = in.motion->centres();
   const double T = in.horizon;
   const bool continuous = knowledge_ != Knowledge::Instant;
   out = {};
@@ -46,7 +46,7 @@ bool FixedStepScheduler::run(const ScheduleInput& in, ScheduleResult& out) {
   ctx.acceleration_bound = in.acceleration_bound;
   ctx.walls = in.walls;
   ctx.exact = knowledge_ == Knowledge::Exact ? &motion : nullptr;
-  ctx.rigid = in.rigid;
+  ctx.motion = in.motion;
 
   const std::uint64_t steps = fixed_step_count(T, dt_, continuous);
   for (std::uint64_t k = 0; k < steps; ++k) {
@@ -62,7 +62,7 @@ bool FixedStepScheduler::run(const ScheduleInput& in, ScheduleResult& out) {
     ctx.start = states_;
 
     StepTimes times;
-    pipeline_.run(ctx, motion, step_, in.timed ? &times : nullptr, cursor.pieces(), in.rigid);
+    pipeline_.run(ctx, step_, in.timed ? &times : nullptr, cursor.pieces());
     out.times.bound += times.bound;
     out.times.broad += times.broad;
     out.times.narrow += times.narrow;

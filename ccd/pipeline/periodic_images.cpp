@@ -22,8 +22,9 @@ ImageShift wrap_jump(const PeriodicBox& box, const Piece& prev, const Piece& nex
   return s;
 }
 
-const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajectories& motion, const RigidMotion* rigid) {
-  source_ = &motion;
+const StepContext& PeriodicImages::begin(const StepContext& ctx) {
+  source_ = ctx.motion;
+  const Trajectories& motion = source_->centres();
   const PeriodicBox& box = *motion.periodic();
   const std::size_t n = motion.size();
   local_.reset(motion.horizon(), std::nullopt);
@@ -56,9 +57,8 @@ const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajector
   ctx_.start = states_;
   ctx_.exact = ctx.exact ? &local_ : nullptr;
   ctx_.start_piece = {};  // the caller's piece indices are not the unwrapped paths'
-  rigid_source_ = rigid ? rigid : ctx.rigid;
-  if (rigid_source_) rigid_.assign_images(*rigid_source_, local_, owner_, ctx.t0, ctx.t1);
-  ctx_.rigid = ctx.rigid ? &rigid_ : nullptr;
+  motion_.assign_images(*source_, local_, owner_, ctx.t0, ctx.t1);
+  ctx_.motion = &motion_;
   if (ctx_.walls) {  // no walls on a wrapped axis: the unwrapped motion is free there
     constexpr double kInf = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k)
@@ -72,8 +72,9 @@ const StepContext& PeriodicImages::begin(const StepContext& ctx, const Trajector
 }
 
 bool PeriodicImages::add_images(const std::vector<Aabb>& boxes) {
-  const PeriodicBox& box = *source_->periodic();
-  const std::size_t n = source_->size();
+  const Trajectories& source = source_->centres();
+  const PeriodicBox& box = *source.periodic();
+  const std::size_t n = source.size();
   std::vector<Piece> pieces;
   std::vector<PieceLow> lows;
   for (std::size_t i = 0; i < n; ++i) {
@@ -84,7 +85,7 @@ bool PeriodicImages::add_images(const std::vector<Aabb>& boxes) {
       pieces.assign(ps.begin(), ps.end());  // copies: appending may move local_'s storage
       lows.assign(ls.begin(), ls.end());
       scratch_.assign(pieces.size(), image_offset(box, s));
-      local_.append_body(source_->radius(i), pieces, lows, scratch_);
+      local_.append_body(source.radius(i), pieces, lows, scratch_);
       owner_.push_back(static_cast<std::uint32_t>(i));
       shift_.push_back(s);
       BodyState st = states_[i];  // evaluated as the states at t0 are: on the image's own piece
@@ -95,7 +96,7 @@ bool PeriodicImages::add_images(const std::vector<Aabb>& boxes) {
     });
   }
   ctx_.start = states_;
-  if (rigid_source_ && states_.size() > n) rigid_.assign_images(*rigid_source_, local_, owner_, ctx_.t0, ctx_.t1);
+  if (states_.size() > n) motion_.assign_images(*source_, local_, owner_, ctx_.t0, ctx_.t1);
   return states_.size() > n;
 }
 

@@ -3,7 +3,8 @@
 // (ccd/scene/periodic.hpp): it lets every bound and every broad phase work on a periodic
 // scene unchanged.
 //
-// For a step [t0, t1] it builds a local set of bodies (`motion()`):
+// For a step [t0, t1] it builds a local set of bodies (`motion()`, whose centres are the
+// local paths):
 //  1. each body, its pieces that overlap the step unwrapped: a piece after a wrap is moved
 //     back by the period, so the body's path over the step is continuous (the bounds see
 //     free motion on wrapped axes: their walls there are at -inf and +inf);
@@ -16,10 +17,10 @@
 // shift built in. `owner` and `shift` map a local body back; pairs of two images of one
 // body are dropped (the box edge is at least twice the diameter: a body never touches its
 // own image). Conservative: the images' paths are the bodies' exact paths moved by exact
-// periods (double-double), so every bound's guarantee carries over. Rigid bodies: a wrap
-// leaves the orientation alone, so every local body keeps its owner's shape and spin
-// (`rigid()`): the orientation-aware bounds and the rigid narrow phase see an image as
-// the body itself, moved by whole periods.
+// periods (double-double), so every bound's guarantee carries over. A wrap leaves the
+// orientation alone, so every local body keeps its owner's shape and spin (`motion()`):
+// the orientation-aware bounds and the narrow phase see an image as the body itself,
+// moved by whole periods.
 #include <bounds/bound.hpp>
 #include <ccd/motion/body_state.hpp>
 #include <ccd/motion/rigid_motion.hpp>
@@ -38,26 +39,23 @@ ImageShift wrap_jump(const PeriodicBox& box, const Piece& prev, const Piece& nex
 
 class PeriodicImages {
  public:
-  /// Builds the n unwrapped bodies of the step ctx.t0..ctx.t1 of `motion` (periodic).
-  /// The returned context is ctx with the local states, the local motion (when ctx.exact
-  /// was given) and walls opened on the wrapped axes. `rigid` (else ctx.rigid, when
-  /// given): the shapes and spins of `motion`'s bodies; every local body then has its
-  /// owner's shape and spin in `rigid()`, which the context carries when ctx.rigid was given.
-  const StepContext& begin(const StepContext& ctx, const Trajectories& motion, const RigidMotion* rigid = nullptr);
+  /// Builds the n unwrapped bodies of the step ctx.t0..ctx.t1 of ctx.motion (periodic).
+  /// The returned context is ctx with the local states, the local motion (`motion()`:
+  /// every local body with its owner's shape and spin; its centres as ctx.exact when
+  /// ctx.exact was given) and walls opened on the wrapped axes.
+  const StepContext& begin(const StepContext& ctx);
   /// Appends the images of every body whose box (boxes[0..n)) meets the cell; returns
   /// whether there are any (then the bound must be prepared again over context()).
   bool add_images(const std::vector<Aabb>& boxes);
 
   const StepContext& context() const { return ctx_; }
-  const Trajectories& motion() const { return local_; }
+  /// The local bodies' motion: their owners' shapes and spins, centres on the local paths.
+  const RigidMotion& motion() const { return motion_; }
   std::uint32_t owner(std::uint32_t local) const { return owner_[local]; }
   const ImageShift& shift(std::uint32_t local) const { return shift_[local]; }
-  /// The local bodies' shapes and spins (owner's; centres on motion()), or null for a
-  /// sphere scene.
-  const RigidMotion* rigid() const { return rigid_source_ ? &rigid_ : nullptr; }
 
  private:
-  const Trajectories* source_ = nullptr;
+  const RigidMotion* source_ = nullptr;
   StepContext ctx_;
   Trajectories local_;
   std::vector<BodyState> states_;
@@ -67,8 +65,7 @@ class PeriodicImages {
   std::vector<std::uint32_t> first_;  ///< per body: first index into piece_shift_ (n + 1)
   std::vector<std::size_t> first_piece_;  ///< per body: index of its first local piece in source pieces
   std::vector<DdVec3> scratch_;
-  const RigidMotion* rigid_source_ = nullptr;
-  RigidMotion rigid_;
+  RigidMotion motion_;  ///< over local_
 };
 
 }  // namespace ccd

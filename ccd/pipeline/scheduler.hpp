@@ -79,9 +79,8 @@ class ContactSink {
 };
 
 struct ScheduleInput {
-  const Trajectories* motion = nullptr;  ///< required
-  /// Shapes and spin of a scene with non-sphere bodies; null for sphere scenes.
-  const RigidMotion* rigid = nullptr;
+  /// Required: the scene's motion (centres, shapes, spin; ccd/motion/rigid_motion.hpp).
+  const RigidMotion* motion = nullptr;
   double horizon = 0.0;             ///< T: the run covers [0, T]
   double acceleration_bound = 0.0;  ///< A given to Bounded bounds
   std::optional<WallBox> walls;

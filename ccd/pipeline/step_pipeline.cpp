@@ -26,6 +26,17 @@ struct Stopwatch {
   }
 };
 
+// The narrow phase of every passed pair, with the entry `entry(a, b)` chooses.
+template <class Entry>
+void solve_passed(NarrowInput in, StepResult& out, bool from_earliest, const StepContext& ctx, Entry entry) {
+  for (std::size_t i = 0; i < out.passed.size(); ++i) {
+    const BodyPair p = out.passed[i];
+    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
+    const ContactResult c = entry(p.a, p.b)(in, p.a, p.b);
+    if (c.found()) out.contacts.push_back({p, c});
+  }
+}
+
 }  // namespace
 
 StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
@@ -38,22 +49,23 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
       // Sphere scenes: the one kind pair is looked up once, here.
       narrow_(table.find(ShapeKind::Sphere, ShapeKind::Sphere)) {}
 
-void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
-                       std::span<const std::size_t> start_piece, const RigidMotion* rigid) {
-  if (motion.periodic()) {
+void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times,
+                       std::span<const std::size_t> start_piece) {
+  const RigidMotion& motion = *ctx.motion;
+  if (motion.centres().periodic()) {
     out.static_candidates.clear();
     out.static_passed.clear();
     out.static_earliest.clear();
     out.static_contacts.clear();
     out.static_tests_saved = 0;
-    run_periodic(ctx, motion, out, times, rigid);
+    run_periodic(ctx, out, times);
     return;
   }
   StepTimes local;
   Stopwatch watch(times != nullptr);
 
   watch.start();
-  if (!start_piece.empty() && ctx.start_piece.empty() && ctx.exact == &motion) {
+  if (!start_piece.empty() && ctx.start_piece.empty() && ctx.exact == &motion.centres()) {
     // The bounds built from the pieces walk from the cursor's pieces instead of searching.
     StepContext with_pieces = ctx;
     with_pieces.start_piece = start_piece;
@@ -76,9 +88,11 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
 
   watch.start();
   out.contacts.clear();
-  NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test(), rigid};
+  NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
-  if (!rigid && !from_earliest && !sample_test() && narrow_.fn == &sphere_sphere_narrow && !narrow_.swapped) {
+  // Decided once per step: plain spheres take the sphere x sphere entry looked up once.
+  if (motion.spheres() && !from_earliest && !sample_test() && narrow_.fn == &sphere_sphere_narrow &&
+      !narrow_.swapped) {
     // Sphere scenes, step queries: the batched exact entry (the same results; a SIMD
     // filter settles most pairs, ccd/narrow/sphere_sphere_narrow_batch.hpp).
     batch_results_.resize(out.passed.size());
@@ -86,7 +100,7 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
     for (std::size_t i = 0; i < out.passed.size(); ++i)
       if (batch_results_[i].found()) out.contacts.push_back({out.passed[i], batch_results_[i]});
   } else {
-    narrow_pairs(in, out, rigid, from_earliest, ctx);
+    narrow_pairs(in, out, from_earliest, ctx);
   }
   watch.stop(local.narrow);
 
@@ -100,14 +114,18 @@ void StepPipeline::run(const StepContext& ctx, const Trajectories& motion, StepR
   }
 }
 
-void StepPipeline::narrow_pairs(NarrowInput in, StepResult& out, const RigidMotion* rigid, bool from_earliest,
+NarrowEntry StepPipeline::entry(const RigidMotion& motion, std::uint32_t a, std::uint32_t b) const {
+  return motion.spheres() ? narrow_ : table_->find(motion.kind(a), motion.kind(b));
+}
+
+void StepPipeline::narrow_pairs(const NarrowInput& in, StepResult& out, bool from_earliest,
                                 const StepContext& ctx) const {
-  for (std::size_t i = 0; i < out.passed.size(); ++i) {
-    const BodyPair p = out.passed[i];
-    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
-    // Sphere scenes: the one entry looked up once; rigid scenes: per pair of shape kinds.
-    const ContactResult c = rigid ? table_->find(rigid->kind(p.a), rigid->kind(p.b))(in, p.a, p.b) : narrow_(in, p.a, p.b);
-    if (c.found()) out.contacts.push_back({p, c});
+  const RigidMotion& motion = *in.motion;
+  if (motion.spheres()) {
+    solve_passed(in, out, from_earliest, ctx, [&](std::uint32_t, std::uint32_t) { return narrow_; });
+  } else {
+    solve_passed(in, out, from_earliest, ctx,
+                 [&](std::uint32_t a, std::uint32_t b) { return table_->find(motion.kind(a), motion.kind(b)); });
   }
 }
 
@@ -165,15 +183,14 @@ void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, Ste
   watch.stop(local.narrow);
 }
 
-void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out,
-                                StepTimes* times, const RigidMotion* rigid) {
+void StepPipeline::run_periodic(const StepContext& ctx, StepResult& out, StepTimes* times) {
   StepTimes local;
   Stopwatch watch(times != nullptr);
   if (!images_) images_ = std::make_unique<PeriodicImages>();
   PeriodicImages& im = *images_;
 
   watch.start();
-  bound_->prepare(im.begin(ctx, motion, rigid), boxes_);
+  bound_->prepare(im.begin(ctx), boxes_);
   if (im.add_images(boxes_)) bound_->prepare(im.context(), boxes_);
   watch.stop(local.bound);
 
@@ -206,9 +223,9 @@ void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& moti
   out.passed.clear();
   out.earliest.clear();
   out.contacts.clear();
-  // Rigid scenes: the local bodies' shapes and spins (their owners'), looked up per pair.
-  const RigidMotion* local_rigid = rigid ? im.rigid() : nullptr;
-  const NarrowInput base{&im.motion(), im.context().start, {}, ctx.t0, ctx.t1, sample_test(), local_rigid};
+  // The local bodies' motion: their owners' shapes and spins on the unwrapped paths.
+  const RigidMotion& local_motion = im.motion();
+  const NarrowInput base{&local_motion, im.context().start, {}, ctx.t0, ctx.t1, sample_test()};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
   for (std::size_t i = 0; i < image_pairs_.size();) {
     const std::uint32_t a = image_pairs_[i].a, b = image_pairs_[i].b;
@@ -231,8 +248,7 @@ void StepPipeline::run_periodic(const StepContext& ctx, const Trajectories& moti
       watch.start();
       NarrowInput in = base;
       if (from_earliest) in.t0 = std::max(ctx.t0, std::min(t.earliest, ctx.t1));
-      const ContactResult c = local_rigid ? table_->find(local_rigid->kind(q.x), local_rigid->kind(q.y))(in, q.x, q.y)
-                                          : narrow_(in, q.x, q.y);
+      const ContactResult c = entry(local_motion, q.x, q.y)(in, q.x, q.y);
       watch.stop(local.narrow);
       if (c.found() && (!best || c.toi < best->toi)) best = c;
     }

@@ -8,7 +8,8 @@
 // A step is [ctx.t0, ctx.t1] (a continuous method: a space-time bound, the narrow phase's
 // first contact over the step) or the sample time ctx.t0 == ctx.t1 (a discrete method:
 // an Instant bound, the narrow phase's sample test at t0). The bound is given ctx as is;
-// the narrow phase gets `motion` (step queries and sample tests) and ctx.start.
+// the narrow phase gets the same motion, ctx.motion (step queries and sample tests), and
+// ctx.start.
 // Stages and their outputs (StepResult):
 //  1. bound.prepare(ctx) -> one box per body (boxes());
 //  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
@@ -16,10 +17,12 @@
 //     Possible), in candidate order;
 //  4. narrow table entry for the pair's kinds (sphere x sphere: ccd/narrow/, exact; any
 //     other pair: conservative advancement) for every passed pair -> `contacts` (found:
-//     Hit or Overlapping), in passed order. Without `rigid` (sphere scenes) the one
-//     sphere x sphere entry is used for every pair, looked up once; with it, per pair.
-//     Sphere scenes' step queries (without narrow_from_earliest) go through the batched
-//     form of the exact entry, ccd/narrow/sphere_sphere_narrow_batch.hpp: same results.
+//     Hit or Overlapping), in passed order. Decided once per step from the motion: when
+//     its bodies are plain spheres (RigidMotion::spheres) the one sphere x sphere entry,
+//     looked up once, serves every pair, else the entry is looked up per pair by the
+//     bodies' kinds. Plain spheres' step queries (without narrow_from_earliest) go through
+//     the batched form of the exact entry, ccd/narrow/sphere_sphere_narrow_batch.hpp:
+//     same results.
 // Scenery (set_scenery: the scene's static polygons, indexed once in a StaticIndex,
 // ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
 //  5. static_index.find_pairs(boxes) -> `static_candidates` (body, polygon), by body;
@@ -33,13 +36,13 @@
 //     broad, bound and narrow times. Bounds see a rigid body as its enclosing sphere
 //     (or their own oriented volume); the narrow phase sees its shape. Periodic scenes run
 //     no static stages.
-// Periodic scenes (`motion.periodic()`): the same stages over the bodies and their images
+// Periodic scenes (`ctx.motion->centres().periodic()`): the same stages over the bodies and their images
 // (ccd/pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
 // image), each candidate image pair tested and solved with its shift, and reported as the
 // pair of bodies: once per pair in `candidates` and `passed` (earliest: the least over its
-// image pairs) and in `contacts` (the earliest contact over its image pairs). With `rigid`,
-// each image keeps its body's shape and spin, and the narrow table entry is looked up per
-// image pair by its bodies' kinds.
+// image pairs) and in `contacts` (the earliest contact over its image pairs). Each image
+// keeps its body's shape and spin (the local motion, PeriodicImages::motion), and the
+// narrow table entry is chosen as for the bodies.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
 // The narrow phase starts at t0 for every pair by default. With
 // PipelineOptions::narrow_from_earliest it starts at the pair test's `earliest` instead
@@ -107,14 +110,13 @@ class StepPipeline {
   StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, std::unique_ptr<BroadPhase> broad,
                const NarrowTable& table = narrow_table(), PipelineOptions options = {});
 
-  /// Runs one step; `out` is overwritten (its buffers reused). Adds the stage times to
-  /// `*times` when given (no clock is read otherwise). `start_piece` optionally gives each
-  /// body's piece index at t0 in `motion` (StateCursor::pieces), sparing the sample test
-  /// and the narrow phase a search, and the bound too when ctx.exact is `motion`
-  /// (StepContext::start_piece).
-  /// `rigid`: the shapes and spin of a scene with non-sphere bodies (null: spheres only).
-  void run(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times = nullptr,
-           std::span<const std::size_t> start_piece = {}, const RigidMotion* rigid = nullptr);
+  /// Runs one step of ctx.motion (the scene's motion, required); `out` is overwritten (its
+  /// buffers reused). Adds the stage times to `*times` when given (no clock is read
+  /// otherwise). `start_piece` optionally gives each body's piece index at t0 in
+  /// ctx.motion->centres() (StateCursor::pieces), sparing the sample test and the narrow
+  /// phase a search, and the bound too when it reads ctx.exact (StepContext::start_piece).
+  void run(const StepContext& ctx, StepResult& out, StepTimes* times = nullptr,
+           std::span<const std::size_t> start_piece = {});
 
   /// The scenery the steps test the bodies against: indexed once here (the index keeps
   /// the polygons' boxes; the polygons must outlive the pipeline). Empty: no static stages.
@@ -130,8 +132,7 @@ class StepPipeline {
 
  private:
   // Periodic scenes: the step over the bodies and their images, mapped back to body pairs.
-  void run_periodic(const StepContext& ctx, const Trajectories& motion, StepResult& out, StepTimes* times,
-                    const RigidMotion* rigid);
+  void run_periodic(const StepContext& ctx, StepResult& out, StepTimes* times);
   struct ImagePair {
     std::uint32_t a, b;  // bodies, a < b
     ImageShift shift;    // of b's image relative to a's
@@ -148,9 +149,11 @@ class StepPipeline {
   NarrowEntry narrow_;
   std::vector<Aabb> boxes_;
   std::vector<ContactResult> batch_results_;  // the batched narrow phase's answers, per passed pair
-  // The narrow table's entries pair by pair (rigid scenes, sample tests, narrow_from_earliest).
-  void narrow_pairs(NarrowInput in, StepResult& out, const RigidMotion* rigid, bool from_earliest,
-                    const StepContext& ctx) const;
+  // The entry for one pair: narrow_ for plain spheres, else by the pair's kinds.
+  NarrowEntry entry(const RigidMotion& motion, std::uint32_t a, std::uint32_t b) const;
+  // The narrow table's entries pair by pair (shaped or spinning bodies, sample tests,
+  // narrow_from_earliest).
+  void narrow_pairs(const NarrowInput& in, StepResult& out, bool from_earliest, const StepContext& ctx) const;
   // Scenery.
   void run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local, bool timed);
   std::span<const StaticPolygon> scenery_;

@@ -28,6 +28,8 @@ inline Vec3 random_vec(std::mt19937_64& rng, double len) {
 struct Step {
   Scene scene;
   Trajectories traj;
+  /// The scene's motion over `traj`, rebuilt by each context() (a copied Step gets its own).
+  mutable RigidMotion motion;
   std::vector<BodyState> start;
   double t0 = 0.0;
   double t1 = 0.0;
@@ -50,6 +52,8 @@ struct Step {
     c.exact = k == Knowledge::Exact ? &traj : nullptr;
     c.acceleration_bound = A;
     c.walls = scene.box;
+    motion = RigidMotion(scene, traj);
+    c.motion = &motion;
     return c;
   }
 };

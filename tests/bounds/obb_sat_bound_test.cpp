@@ -162,8 +162,7 @@ TEST_CASE("obb_sat misses no contact of the certified rigid truth", "[bounds][ob
     const ccdlab::TruthIndex truth(rt.events);
     ccdlab::RunInput in;
     in.scene = &st.scene;
-    in.trajectories = &st.traj;
-    in.rigid = &st.rigid;
+    in.motion = &st.rigid;
     in.truth = &truth;
     in.truth_error = err;
     in.acceleration_bound = st.scene.max_acceleration();

@@ -41,7 +41,7 @@ class RigidStep {
     c.exact = k == Knowledge::Exact ? &traj : nullptr;
     c.acceleration_bound = scene.max_acceleration();
     c.walls = scene.box;
-    c.rigid = &rigid;
+    c.motion = &rigid;
     return c;
   }
 
@@ -229,7 +229,7 @@ inline void check_pipeline_superset(const std::string& name) {
     StepResult step;
     for (int k = 0; k <= 8; ++k) {
       const double t = k / 8.0;
-      pipeline.run(st.context(Knowledge::Instant, t, t), st.traj, step, nullptr, {}, &st.rigid);
+      pipeline.run(st.context(Knowledge::Instant, t, t), step);
       const std::set<BodyPair> passed(step.passed.begin(), step.passed.end());
       CHECK(step.passed.size() <= step.candidates.size());
       const auto n = static_cast<std::uint32_t>(st.traj.size());

@@ -39,6 +39,8 @@ std::size_t check_window(const ccd::Scene& scene, const ccd::Trajectories& m, do
   searched.start = start;
   searched.exact = &m;
   searched.walls = scene.box;
+  const ccd::RigidMotion motion(scene, m);
+  searched.motion = &motion;
   ccd::StepContext walked = searched;
   walked.start_piece = cursor.pieces();
   std::vector<ccd::BodyPair> pairs;

@@ -33,7 +33,8 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(scene, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.acceleration_bound = scene.max_acceleration();
   REQUIRE(!truth.events().empty());

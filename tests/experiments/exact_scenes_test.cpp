@@ -131,7 +131,8 @@ TEST_CASE("exact scenes: conservative methods miss nothing, every self-check is 
     const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
     ccdlab::RunInput in;
     in.scene = &c.scene;
-    in.trajectories = &traj;
+    const ccd::RigidMotion scene_motion(c.scene, traj);
+    in.motion = &scene_motion;
     in.truth = &truth;
     in.acceleration_bound = c.scene.max_acceleration();
     std::vector<std::string> names = ccdlab::all_method_names();

@@ -17,16 +17,17 @@
 
 int main() {
   const ccd::Scene scene = ccd::load_scene(CCDLAB_SOURCE_DIR "/data/scenes/default.json");
-  const ccd::Trajectories motion(scene);                  // exact: wall reflections solved
-  const ccd::Truth truth = ccd::compute_truth(ccd::RigidMotion(scene, motion), scene.scenery);  // every contact
+  const ccd::Trajectories centres(scene);                 // exact: wall reflections solved
+  const ccd::RigidMotion motion(scene, centres);          // the scene's motion: centres, shapes, spin
+  const ccd::Truth truth = ccd::compute_truth(motion, scene.scenery);  // every contact
   const ccd::BoundSpec capsule = ccd::parse_bound("capsule");  // a conservative space-time bound
   ccd::StepPipeline pipeline(capsule.make(), capsule.info->knowledge,
                              ccd::find_broad_phase("grid").make());  // culls with the bound's boxes
   const double t0 = 0.0, t1 = 1.0 / 60.0;                 // one step
   std::vector<ccd::BodyState> start;
-  ccd::StateCursor(motion).evaluate(t0, start);           // every body's state at t0
+  ccd::StateCursor(centres).evaluate(t0, start);          // every body's state at t0
   ccd::StepResult step;                                   // bound -> broad phase -> test -> narrow
-  pipeline.run({t0, t1, start, &motion, 0.0, scene.box}, motion, step);
+  pipeline.run({.t0 = t0, .t1 = t1, .start = start, .exact = &centres, .walls = scene.box, .motion = &motion}, step);
   for (const ccd::PairContact& c : step.contacts)
     std::cout << c.pair.a << " and " << c.pair.b << " touch at t = " << c.contact.toi << "\n";
   std::cout << truth.events.size() << " contact events in " << scene.horizon << " s\n";

@@ -92,8 +92,7 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   const ccdlab::TruthIndex truth(rt.events);
   ccdlab::RunInput in;
   in.scene = &c.scene;
-  in.trajectories = &traj;
-  in.rigid = &motion;
+  in.motion = &motion;
   in.truth = &truth;
   in.truth_error = err;
   in.acceleration_bound = c.scene.max_acceleration();

@@ -34,8 +34,7 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
   const ccdlab::TruthIndex truth(body_truth.events);
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
-  in.rigid = &motion;
+  in.motion = &motion;
   in.truth = &truth;
   in.truth_error = err;
   in.static_events = st.events;

@@ -32,7 +32,8 @@ struct Fixture {
   ccdlab::RunRecord run(const std::string& method, double dt, double A = 0.0) const {
     ccdlab::RunInput in;
     in.scene = &scene;
-    in.trajectories = &traj;
+    const ccd::RigidMotion scene_motion(scene, traj);
+    in.motion = &scene_motion;
     in.truth = &truth;
     in.acceleration_bound = A;
     return run_method(in, parse_method(method), dt);
@@ -217,7 +218,8 @@ TEST_CASE("list_missed: the missed events are the truth events no sample falls i
   REQUIRE(f.truth.events().size() == 4);
   ccdlab::RunInput in;
   in.scene = &f.scene;
-  in.trajectories = &f.traj;
+  const ccd::RigidMotion scene_motion(f.scene, f.traj);
+  in.motion = &scene_motion;
   in.truth = &f.truth;
   in.list_missed = true;
   // Samples 0, 2, 4, 6, 8, 10: [1.25, 2.25] holds 2 and [5, 6] holds 6; [2.5, 3.5] and

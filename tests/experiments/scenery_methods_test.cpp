@@ -69,7 +69,8 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
   REQUIRE(!events.empty());
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(scene, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.static_events = events;
   in.acceleration_bound = scene.max_acceleration();
@@ -135,7 +136,8 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   ccdlab::RunInput in;
   in.scene = &s;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(s, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method("capsule/grid@fixed:kinematic=1"), 0.25);
   CHECK(r.detected == 1);

@@ -28,7 +28,8 @@ struct Study {
   ccdlab::RunRecord run(const std::string& method, double dt, double A = -1.0) const {
     ccdlab::RunInput in;
     in.scene = &scene;
-    in.trajectories = &traj;
+    const ccd::RigidMotion scene_motion(scene, traj);
+    in.motion = &scene_motion;
     in.truth = &truth;
     in.acceleration_bound = A >= 0.0 ? A : scene.max_acceleration();
     return ccdlab::run_method(in, ccdlab::parse_method(method), dt);
@@ -51,8 +52,7 @@ struct RigidStudy {
   ccdlab::RunRecord run(const std::string& method, double dt) const {
     ccdlab::RunInput in;
     in.scene = &scene;
-    in.trajectories = &traj;
-    in.rigid = &motion;
+    in.motion = &motion;
     in.truth = &truth;
     in.truth_error = error;
     in.acceleration_bound = scene.max_acceleration();
@@ -364,7 +364,8 @@ TEST_CASE("study thin-obstacles: discrete methods pass through thin plates, cons
   REQUIRE(events.size() > 5);
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(scene, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.static_events = events;
   in.acceleration_bound = scene.max_acceleration();

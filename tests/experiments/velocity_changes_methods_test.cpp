@@ -92,7 +92,8 @@ TEST_CASE("velocity changes: conservative methods miss nothing, every self-check
     REQUIRE(truth.events().size() >= 4);
     ccdlab::RunInput in;
     in.scene = &c.scene;
-    in.trajectories = &traj;
+    const ccd::RigidMotion scene_motion(c.scene, traj);
+    in.motion = &scene_motion;
     in.truth = &truth;
     in.acceleration_bound = c.scene.max_acceleration();
     std::vector<std::string> names = ccdlab::all_method_names();
@@ -142,7 +143,8 @@ TEST_CASE("velocity changes: a Bounded bound misses a jump inside its step (docu
   CHECK(truth.events()[0].enter == Approx(0.0625).epsilon(0).margin(1e-15));
   ccdlab::RunInput in;
   in.scene = &s;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(s, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.acceleration_bound = s.max_acceleration();
   for (const char* name : {"horn/brute", "horn_sat/brute", "enclosing_sphere/brute"}) {

@@ -23,7 +23,8 @@ void check_methods(const ccd::Scene& scene, double dt, const std::string& what, 
   const ccdlab::TruthIndex truth(ccd::compute_truth(traj));
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
+  const ccd::RigidMotion scene_motion(scene, traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.acceleration_bound = scene.max_acceleration();
   REQUIRE(!truth.events().empty());

@@ -27,8 +27,7 @@ void check_every_method(const ccd::Scene& scene, double dt, const std::string& w
   const ccdlab::TruthIndex truth(rt.events);
   ccdlab::RunInput in;
   in.scene = &scene;
-  in.trajectories = &traj;
-  in.rigid = &motion;
+  in.motion = &motion;
   in.truth = &truth;
   in.truth_error = err;
   in.acceleration_bound = scene.max_acceleration();

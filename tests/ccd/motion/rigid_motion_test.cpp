@@ -64,3 +64,57 @@ TEST_CASE("walls act on the enclosing sphere of a shaped body", "[motion][rigid]
   const ccd::Rotations rot(s);
   CHECK(rot.pieces(0).size() == 1);
 }
+
+TEST_CASE("spheres(): plain spheres only, decided once for the scene, and assign_spheres reuses a motion",
+          "[motion][rigid]") {
+  ccd::Scene s;
+  s.horizon = 1.0;
+  ccd::Body ball;
+  ball.radius = 0.5;
+  ball.position = Vec3(1, 0, 0);
+  ball.velocity = Vec3(1, 0, 0);
+  s.add_rigid_body(ball, ccd::RigidBody{});
+  ball.position = Vec3(4, 0, 0);
+  ball.radius = 0.25;
+  s.add_rigid_body(ball, ccd::RigidBody{});
+  const ccd::Trajectories balls(s);
+  // A scene of balls, built from the scene or from its trajectories alone: plain spheres.
+  CHECK(ccd::RigidMotion(s, balls).spheres());
+  CHECK(ccd::RigidMotion(balls).spheres());
+  CHECK(ccd::RigidMotion(balls).rotations().empty());
+
+  // One shaped body (spinning or not) makes the whole scene's motion not plain.
+  ccd::Scene shaped = s;
+  shaped.shapes.push_back(ccd::make_box_shape(Vec3(0.25, 0.25, 0.25), "cube"));
+  ccd::Body cube;
+  cube.position = Vec3(8, 0, 0);
+  ccd::RigidBody still;
+  still.shape = 0;
+  shaped.add_rigid_body(cube, still);
+  const ccd::Trajectories shaped_centres(shaped);
+  ccd::RigidMotion m(shaped, shaped_centres);
+  CHECK_FALSE(m.spheres());
+  CHECK(m.kind(0) == ccd::ShapeKind::Sphere);
+  CHECK(m.kind(2) == ccd::ShapeKind::Box);
+
+  // The images of a step keep the source's answer, as they keep its shapes.
+  ccd::RigidMotion images;
+  const std::vector<std::uint32_t> owner = {2, 0, 2};
+  images.assign_images(m, shaped_centres, owner, 0.0, 1.0);
+  CHECK_FALSE(images.spheres());
+  CHECK(images.kind(0) == ccd::ShapeKind::Box);
+  CHECK(images.kind(1) == ccd::ShapeKind::Sphere);
+
+  // The same object made the plain-sphere motion of other trajectories.
+  m.assign_spheres(balls);
+  CHECK(m.spheres());
+  CHECK(m.rotations().empty());
+  REQUIRE(m.size() == 2);
+  CHECK(&m.centres() == &balls);
+  for (std::uint32_t i = 0; i < 2; ++i) {
+    CHECK(m.kind(i) == ccd::ShapeKind::Sphere);
+    CHECK(m.proxy(i).points.size() == 1);
+    CHECK(m.proxy(i).points[0] == Vec3::Zero());
+    CHECK(m.proxy(i).radius == balls.radius(i));
+  }
+}

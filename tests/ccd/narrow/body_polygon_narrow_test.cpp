@@ -20,12 +20,11 @@ struct Fixture {
   std::vector<ccd::BodyState> start;
   ccd::ContactResult query(std::uint32_t body, double t0, double t1, bool sample = false) {
     ccd::NarrowInput in;
-    in.motion = &traj;
     in.start = start;
     in.t0 = t0;
     in.t1 = t1;
     in.sample = sample;
-    in.rigid = &rigid;
+    in.motion = &rigid;
     return ccd::body_polygon_narrow(in, body, scene.scenery[body]);
   }
 };
@@ -80,10 +79,9 @@ TEST_CASE("body-polygon narrow phase: a sphere in a rigid scene takes the exact 
   const ccd::Trajectories traj(s);
   const ccd::RigidMotion rigid(s, traj);
   ccd::NarrowInput in;
-  in.motion = &traj;
   in.t0 = 1.0;
   in.t1 = 2.0;
-  in.rigid = &rigid;
+  in.motion = &rigid;
   const ccd::ContactResult c = ccd::body_polygon_narrow(in, static_cast<std::uint32_t>(s.bodies.size() - 1), s.scenery[0]);
   REQUIRE(c.status == ccd::QueryStatus::Hit);
   CHECK(c.toi == Approx(1.5).margin(1e-12));

@@ -26,11 +26,10 @@ struct World {
   }
   ccd::ContactResult step(double t0, double t1, bool sample = false) const {
     ccd::NarrowInput in;
-    in.motion = &traj;
     in.t0 = t0;
     in.t1 = t1;
     in.sample = sample;
-    in.rigid = rigid.get();
+    in.motion = rigid.get();
     return ccd::narrow_table().find(scene.kind(0), scene.kind(1))(in, 0, 1);
   }
   /// The first of the times k / 4096 in [0, 1] at which GJK certifies that bodies 0 and 1
@@ -154,10 +153,9 @@ TEST_CASE("cross-path: on sphere pairs conservative advancement brackets the exa
     }
     w.build();
     ccd::NarrowInput in;
-    in.motion = &w.traj;
     in.t0 = 0.0;
     in.t1 = 1.0;
-    in.rigid = w.rigid.get();
+    in.motion = w.rigid.get();
     const ccd::ContactResult exact = ccd::sphere_sphere_narrow(in, 0, 1);
     const ccd::ContactResult ca = ccd::conservative_advancement(in, 0, 1);
     REQUIRE(ca.found() == exact.found());

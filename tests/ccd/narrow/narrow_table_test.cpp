@@ -24,14 +24,16 @@ ccd::Scene head_on() {
 }
 
 ccd::ContactResult step_query(const ccd::Trajectories& m, double t0, double t1) {
-  return ccd::sphere_sphere_narrow({&m, {}, {}, t0, t1, false}, 0, 1);
+  const ccd::RigidMotion motion(m);
+  return ccd::sphere_sphere_narrow({&motion, {}, {}, t0, t1, false}, 0, 1);
 }
 
 ccd::ContactResult sample_at(const ccd::Trajectories& m, double t) {
   std::vector<ccd::BodyState> start;
   ccd::StateCursor cursor(m);
   cursor.evaluate(t, start);
-  return ccd::sphere_sphere_narrow({&m, start, cursor.pieces(), t, t, true}, 0, 1);
+  const ccd::RigidMotion motion(m);
+  return ccd::sphere_sphere_narrow({&motion, start, cursor.pieces(), t, t, true}, 0, 1);
 }
 
 }  // namespace
@@ -97,5 +99,6 @@ TEST_CASE("sphere x sphere sample tests use the truth's definition of touching",
   // Without the cursor's piece indices the answer is the same.
   std::vector<ccd::BodyState> start;
   ccd::StateCursor(m).evaluate(4.5, start);
-  CHECK(ccd::sphere_sphere_narrow({&m, start, {}, 4.5, 4.5, true}, 0, 1).found());
+  const ccd::RigidMotion motion(m);
+  CHECK(ccd::sphere_sphere_narrow({&motion, start, {}, 4.5, 4.5, true}, 0, 1).found());
 }

@@ -31,9 +31,10 @@ std::size_t check_step(const ccd::Trajectories& m, double t0, double t1) {
   std::vector<ccd::BodyState> start;
   ccd::StateCursor cursor(m);
   cursor.evaluate(t0, start);
+  const ccd::RigidMotion motion(m);
   std::size_t found = 0;
   for (const bool with_pieces : {false, true}) {
-    ccd::NarrowInput in{&m, start, {}, t0, t1, false};
+    ccd::NarrowInput in{&motion, start, {}, t0, t1, false};
     if (with_pieces) in.start_piece = cursor.pieces();
     std::vector<ccd::ContactResult> out(pairs.size());
     ccd::sphere_sphere_narrow_batch(in, pairs, out);
@@ -86,7 +87,9 @@ TEST_CASE("batched narrow phase: hand-made dyadic pairs equal the scalar entry",
   // The wrong number of results is refused.
   std::vector<ccd::BodyPair> pairs{{0, 1}};
   std::vector<ccd::ContactResult> out(2);
-  CHECK_THROWS_AS(ccd::sphere_sphere_narrow_batch({&m, {}, {}, 0.0, 1.0, false}, pairs, out), std::invalid_argument);
+  const ccd::RigidMotion motion(m);
+  CHECK_THROWS_AS(ccd::sphere_sphere_narrow_batch({&motion, {}, {}, 0.0, 1.0, false}, pairs, out),
+                  std::invalid_argument);
 }
 
 TEST_CASE("batched narrow phase: random crowded scenes with walls and gravity equal the scalar entry",

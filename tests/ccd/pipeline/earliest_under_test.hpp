@@ -12,16 +12,18 @@ namespace ccd::test {
 
 class EarliestUnderTest {
  public:
+  /// `rigid`: the scene's motion with its shapes and spin; null: every run's `motion` as
+  /// plain spheres.
   explicit EarliestUnderTest(std::unique_ptr<EarliestScheduler> scheduler, const RigidMotion* rigid = nullptr)
       : scheduler_(std::move(scheduler)), rigid_(rigid) {}
 
-  /// One run over [0, horizon]; `contacts` gets the run's contacts; stage times are taken
-  /// and added to `*times` when given.
+  /// One run over [0, horizon] of `motion` (the centres of `rigid` when given); `contacts`
+  /// gets the run's contacts; stage times are taken and added to `*times` when given.
   bool run(const Trajectories& motion, double horizon, double acceleration_bound, const std::optional<WallBox>& walls,
            std::vector<ScheduledContact>& contacts, StepTimes* times = nullptr) {
     ScheduleInput in;
-    in.motion = &motion;
-    in.rigid = rigid_;
+    if (!rigid_) spheres_.assign_spheres(motion);
+    in.motion = rigid_ ? rigid_ : &spheres_;
     in.horizon = horizon;
     in.acceleration_bound = acceleration_bound;
     in.walls = walls;
@@ -43,6 +45,7 @@ class EarliestUnderTest {
  private:
   std::unique_ptr<EarliestScheduler> scheduler_;
   const RigidMotion* rigid_;
+  RigidMotion spheres_;
   ScheduleResult last_;
 };
 

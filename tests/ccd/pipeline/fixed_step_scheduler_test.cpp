@@ -23,11 +23,12 @@ struct Small {
   ccd::Scene scene = ccdlab::generate_scene(
       "gas", {{"bodies", 120}, {"seed", 5}, {"speed_max", 30}, {"horizon", 0.5}});
   ccd::Trajectories traj{scene};
+  ccd::RigidMotion motion{scene, traj};
 };
 
 ccd::ScheduleInput input_of(const Small& s) {
   ccd::ScheduleInput in;
-  in.motion = &s.traj;
+  in.motion = &s.motion;
   in.horizon = s.scene.horizon;
   in.acceleration_bound = s.scene.max_acceleration();
   in.walls = s.scene.box;
@@ -64,6 +65,7 @@ LoopCounts plain_loop(const Small& s, const std::string& method, double dt) {
   ctx.acceleration_bound = s.scene.max_acceleration();
   ctx.walls = s.scene.box;
   ctx.exact = bound.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
+  ctx.motion = &s.motion;
   LoopCounts c;
   const double T = s.scene.horizon;
   for (std::uint64_t k = 0; continuous ? double(k) * dt < T : double(k) * dt <= T; ++k) {
@@ -71,7 +73,7 @@ LoopCounts plain_loop(const Small& s, const std::string& method, double dt) {
     ctx.t1 = continuous ? std::min(double(k + 1) * dt, T) : ctx.t0;
     cursor.evaluate(ctx.t0, states);
     ctx.start = states;
-    pipeline.run(ctx, s.traj, step, nullptr, cursor.pieces());
+    pipeline.run(ctx, step, nullptr, cursor.pieces());
     ++c.steps;
     c.candidates += step.candidates.size();
     c.passed += step.passed.size();
@@ -131,7 +133,8 @@ TEST_CASE("fixed steps through the library give the counts of the runner's recor
   REQUIRE(truth.events().size() > 5);
   ccdlab::RunInput in;
   in.scene = &s.scene;
-  in.trajectories = &s.traj;
+  const ccd::RigidMotion scene_motion(s.scene, s.traj);
+  in.motion = &scene_motion;
   in.truth = &truth;
   in.acceleration_bound = s.scene.max_acceleration();
   for (const char* method : {"capsule/grid", "horn:4/sap", "aabb/grid", "swept_aabb/grid@fixed:narrow_from_earliest=1"}) {

@@ -49,7 +49,7 @@ ccd::StepContext context(const World& w, double t0, double t1, const std::vector
   ctx.exact = exact ? &w.traj : nullptr;
   ctx.acceleration_bound = w.scene.max_acceleration();
   ctx.walls = w.scene.box;
-  ctx.rigid = w.motion.get();
+  ctx.motion = w.motion.get();
   return ctx;
 }
 
@@ -65,15 +65,15 @@ TEST_CASE("periodic images keep their bodies' shapes and spins", "[pipeline][per
   ccd::StateCursor(w.traj).evaluate(t0, start);
   const ccd::StepContext ctx = context(w, t0, t1, start, true);
   ccd::PeriodicImages im;
-  const ccd::StepContext& local = im.begin(ctx, w.traj, w.motion.get());
+  const ccd::StepContext& local = im.begin(ctx);
   std::vector<ccd::Aabb> boxes;
   const auto bound = ccd::parse_bound("swept_aabb").make();
   bound->prepare(local, boxes);
   REQUIRE(im.add_images(boxes));
-  const ccd::RigidMotion* r = im.rigid();
-  REQUIRE(r != nullptr);
-  REQUIRE(im.context().rigid == r);
-  REQUIRE(r->size() == im.motion().size());
+  const ccd::RigidMotion* r = &im.motion();
+  REQUIRE(im.context().motion == r);
+  REQUIRE(im.context().exact == &r->centres());
+  REQUIRE(r->size() == im.motion().centres().size());
   REQUIRE(r->size() > w.scene.bodies.size());
   for (std::uint32_t j = 0; j < r->size(); ++j) {
     const std::uint32_t o = im.owner(j);
@@ -114,8 +114,8 @@ TEST_CASE("every bound x every broad phase on a wrapped rigid scene: brute-force
     ccd::StepPipeline pipeline(bound_info.make(), bound_info.knowledge, broad_info.make());
     ccd::StepPipeline reference(bound_info.make(), bound_info.knowledge, ccd::find_broad_phase("brute").make());
     ccd::StepResult step, ref;
-    pipeline.run(ctx, w.traj, step, nullptr, {}, w.motion.get());
-    reference.run(ctx, w.traj, ref, nullptr, {}, w.motion.get());
+    pipeline.run(ctx, step);
+    reference.run(ctx, ref);
     images += pipeline.boxes().size() - n;
     CHECK(as_set(step.candidates).size() == step.candidates.size());
     CHECK(as_set(step.candidates) == as_set(ref.candidates));

@@ -50,11 +50,13 @@ TEST_CASE("the step pipeline on a wrapped scene equals brute force and the perio
     ctx.exact = bound_info.knowledge == ccd::Knowledge::Exact ? &motion : nullptr;
     ctx.acceleration_bound = scene.max_acceleration();
     ctx.walls = scene.box;
+    const ccd::RigidMotion scene_motion(scene, motion);
+    ctx.motion = &scene_motion;
     ccd::StepPipeline pipeline(bound_info.make(), bound_info.knowledge, broad_info.make());
     ccd::StepPipeline reference(bound_info.make(), bound_info.knowledge, ccd::find_broad_phase("brute").make());
     ccd::StepResult step, ref;
-    pipeline.run(ctx, motion, step);
-    reference.run(ctx, motion, ref);
+    pipeline.run(ctx, step);
+    reference.run(ctx, ref);
     images += pipeline.boxes().size() - n;
     // Each body pair once, the same pairs as brute force.
     CHECK(as_set(step.candidates).size() == step.candidates.size());

@@ -28,9 +28,10 @@ bool mentions(const std::string& text, const std::string& part) { return text.fi
 struct Gas {
   ccd::Scene scene = ccdlab::generate_scene("gas", {{"bodies", 100}, {"seed", 7}, {"speed_max", 30}, {"horizon", 0.5}});
   ccd::Trajectories traj{scene};
+  ccd::RigidMotion motion{scene, traj};
   ccd::ScheduleInput input() const {
     ccd::ScheduleInput in;
-    in.motion = &traj;
+    in.motion = &motion;
     in.horizon = scene.horizon;
     in.acceleration_bound = scene.max_acceleration();
     in.walls = scene.box;
@@ -132,8 +133,9 @@ TEST_CASE("the registry's factory builds each scheduler with its options", "[pip
     CHECK(stats_of(*fine, g.input()).batches == 10);
     ccd::Scene floor = ccdlab::generate_scene("floor_ramp", {{"bodies", 60}, {"seed", 2}});
     const ccd::Trajectories traj(floor);
+    const ccd::RigidMotion motion(floor, traj);
     ccd::ScheduleInput in;
-    in.motion = &traj;
+    in.motion = &motion;
     in.horizon = floor.horizon;
     in.acceleration_bound = floor.max_acceleration();
     in.walls = floor.box;

@@ -46,8 +46,10 @@ TEST_CASE("static stages: index pairs equal brute force, kinematic keeps first c
     ctx.exact = info.knowledge == Knowledge::Exact ? &motion : nullptr;
     ctx.acceleration_bound = A;
     ctx.walls = scene.box;
-    plain.run(ctx, motion, a, nullptr, cursor.pieces());
-    kinematic.run(ctx, motion, b, nullptr, cursor.pieces());
+    const ccd::RigidMotion scene_motion(scene, motion);
+    ctx.motion = &scene_motion;
+    plain.run(ctx, a, nullptr, cursor.pieces());
+    kinematic.run(ctx, b, nullptr, cursor.pieces());
     // Index pairs: brute force over the pipeline's boxes, sorted by body then polygon.
     std::vector<StaticPair> brute;
     for (std::uint32_t i = 0; i < motion.size(); ++i)

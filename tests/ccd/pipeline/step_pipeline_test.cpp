@@ -47,11 +47,13 @@ TEST_CASE("the step pipeline equals the brute-force reference at every stage", "
   ctx.exact = bound_info.knowledge == ccd::Knowledge::Exact ? &motion : nullptr;
   ctx.acceleration_bound = scene.max_acceleration();
   ctx.walls = scene.box;
+  const ccd::RigidMotion scene_motion(scene, motion);
+  ctx.motion = &scene_motion;
   ccd::StepPipeline pipeline(bound_info.make(), bound_info.knowledge, broad_info.make());
   CHECK(pipeline.sample_test() == sample);
   ccd::StepResult step;
   ccd::StepTimes times;
-  pipeline.run(ctx, motion, step, &times, cursor.pieces());
+  pipeline.run(ctx, step, &times, cursor.pieces());
 
   // Broad phase: every pair of overlapping boxes, once.
   const std::vector<ccd::Aabb>& boxes = pipeline.boxes();
@@ -113,12 +115,14 @@ TEST_CASE("the narrow phase started at earliest finds the same contacts", "[pipe
       ctx.exact = info.knowledge == ccd::Knowledge::Exact ? &motion : nullptr;
       ctx.acceleration_bound = scene.max_acceleration();
       ctx.walls = scene.box;
+      const ccd::RigidMotion scene_motion(scene, motion);
+      ctx.motion = &scene_motion;
       ccd::StepPipeline from_start(info.make(), info.knowledge, ccd::find_broad_phase("grid").make());
       ccd::StepPipeline from_earliest(info.make(), info.knowledge, ccd::find_broad_phase("grid").make(),
                                       ccd::narrow_table(), ccd::PipelineOptions{true});
       ccd::StepResult a, b;
-      from_start.run(ctx, motion, a);
-      from_earliest.run(ctx, motion, b);
+      from_start.run(ctx, a);
+      from_earliest.run(ctx, b);
       CHECK(a.passed == b.passed);
       REQUIRE(a.contacts.size() == b.contacts.size());
       for (std::size_t i = 0; i < a.contacts.size(); ++i) {

@@ -17,7 +17,10 @@ int main() {
   std::vector<ccd::BodyState> start;
   ccd::StateCursor(motion).evaluate(0.0, start);
   ccd::StepResult step;
-  pipeline.run({0.0, scene.horizon, start, &motion, 0.0, scene.box}, motion, step);
+  const ccd::RigidMotion scene_motion(scene, motion);
+  pipeline.run({.t0 = 0.0, .t1 = scene.horizon, .start = start, .exact = &motion, .walls = scene.box,
+                .motion = &scene_motion},
+               step);
   // Over one step covering the whole horizon, a conservative bound finds every pair of the truth.
   std::cout << "bodies " << scene.bodies.size() << " events " << events.size() << " contacts "
             << step.contacts.size() << "\n";
