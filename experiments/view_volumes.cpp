@@ -59,7 +59,7 @@ json volume_json(const ccd::Volume& v) {
 // What one run built its bound with, and over which windows.
 class RunVolumes {
  public:
-  RunVolumes(const ccd::Scene& scene, const ccd::Trajectories& traj, const ccd::RigidMotion* rigid,
+  RunVolumes(const ccd::Scene& scene, const ccd::Trajectories& traj, const ccd::RigidMotion& motion,
              const MethodSpec& method, double dt, double acceleration_bound)
       : scene_(scene), traj_(traj), dt_(dt), bound_(method.bound.make()) {
     continuous_ = method.continuous();
@@ -75,7 +75,7 @@ class RunVolumes {
     ctx_.acceleration_bound = acceleration_bound;
     ctx_.walls = scene.box;
     ctx_.exact = method.bound.info->knowledge == ccd::Knowledge::Exact ? &traj : nullptr;
-    ctx_.rigid = rigid;
+    ctx_.motion = &motion;
     states_.resize(traj.size());
   }
 
@@ -187,8 +187,7 @@ json none(const std::string& reason) { return {{"coverage", "none"}, {"reason", 
 
 void add_run_volumes(const ccd::Scene& scene, const ccd::Trajectories& traj, json& runs) {
   const std::size_t n = traj.size();
-  std::optional<ccd::RigidMotion> rigid;
-  if (scene.has_non_spheres()) rigid.emplace(scene, traj);
+  const ccd::RigidMotion motion(scene, traj);
   // Each run's method, or why it has no volumes.
   std::vector<std::optional<MethodSpec>> methods(runs.size());
   for (std::size_t r = 0; r < runs.size(); ++r) {
@@ -208,7 +207,7 @@ void add_run_volumes(const ccd::Scene& scene, const ccd::Trajectories& traj, jso
   double total = 0.0;
   for (std::size_t r = 0; r < runs.size(); ++r) {
     if (!methods[r]) continue;
-    plans[r] = std::make_unique<RunVolumes>(scene, traj, rigid ? &*rigid : nullptr, *methods[r],
+    plans[r] = std::make_unique<RunVolumes>(scene, traj, motion, *methods[r],
                                             runs[r].value("dt", 0.0), runs[r].value("acceleration_bound", 0.0));
     const double per = static_cast<double>(plans[r]->per_window());
     for (std::size_t i = 0; i < n && total <= kMaxViewVolumes && per > 0.0; ++i) {

@@ -69,8 +69,7 @@ ccd::Aabb page_hull(const json& p) {
 void check_run(const ccd::Scene& scene, const ccd::Trajectories& traj, const json& run, const std::string& bound_spec) {
   const ccd::BoundSpec bs = ccd::parse_bound(bound_spec);
   const auto bound = bs.make();
-  std::optional<ccd::RigidMotion> rigid;
-  if (scene.has_non_spheres()) rigid.emplace(scene, traj);
+  const ccd::RigidMotion motion(scene, traj);
   const bool instant = bs.info->knowledge == ccd::Knowledge::Instant;
   const bool all = run["volumes"]["coverage"] == "all";
   const bool hull_is_box = bs.info->name != "capsule" && bs.info->name != "horn_sat";
@@ -94,7 +93,7 @@ void check_run(const ccd::Scene& scene, const ccd::Trajectories& traj, const jso
       ctx.exact = bs.info->knowledge == ccd::Knowledge::Exact ? &traj : nullptr;
       ctx.acceleration_bound = run["acceleration_bound"].get<double>();
       ctx.walls = scene.box;
-      ctx.rigid = rigid ? &*rigid : nullptr;
+      ctx.motion = &motion;
       bound->prepare(ctx, boxes);
       own.clear();
       bound->volumes(static_cast<std::uint32_t>(i), own);
