@@ -15,7 +15,8 @@ def _rows(name, values, n, width):
     a = _floats(name, values)
     want = (n, width) if width else (n,)
     if a.shape != want:
-        raise InputError(f"scene_from_arrays: {name}: must be an array of shape {want}, got {a.shape}")
+        raise InputError(f"scene_from_arrays: {name}: must be an array of shape {want} "
+                         f"(one entry per body of positions), got {a.shape}")
     return _finite(name, a)
 
 
