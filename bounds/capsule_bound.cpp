@@ -2,6 +2,7 @@
 #include <bounds/rounding.hpp>
 #include <ccd/motion/piece_walk.hpp>
 #include <ccd/queries/point_polygon.hpp>
+#include <ccd/queries/point_segment.hpp>
 #include <ccd/queries/segment_polygon.hpp>
 #include <ccd/queries/segment_segment.hpp>
 
@@ -11,17 +12,6 @@
 #include <stdexcept>
 
 namespace ccd {
-namespace {
-
-double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
-  const Vec3 d = p1 - p0;
-  const double dd = d.squaredNorm();
-  const double u = dd > 0.0 ? std::clamp((x - p0).dot(d) / dd, 0.0, 1.0) : 0.0;
-  return (x - (p0 + d * u)).norm();
-}
-
-}  // namespace
-
 Aabb CapsuleBound::build(const StepContext& ctx, std::size_t i) {
   const Trajectories& tr = *ctx.exact;
   // Every piece is found from the one at t0 (the state cursor's when the pipeline has it):

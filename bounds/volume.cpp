@@ -1,18 +1,10 @@
 #include <bounds/volume.hpp>
 
+#include <ccd/queries/point_segment.hpp>
+
 #include <algorithm>
 
 namespace ccd {
-namespace {
-
-double point_segment_distance(const Vec3& x, const Vec3& p0, const Vec3& p1) {
-  const Vec3 d = p1 - p0;
-  const double dd = d.squaredNorm();
-  const double u = dd > 0.0 ? std::clamp((x - p0).dot(d) / dd, 0.0, 1.0) : 0.0;
-  return (x - (p0 + d * u)).norm();
-}
-
-}  // namespace
 
 Aabb Volume::hull() const {
   switch (kind) {
