@@ -17,7 +17,7 @@
 // pipeline/continuous/BOUND and pipeline/discrete/aabb: one step (dt = 1/60) of the shared 100,000-body
 // peer scene (benchmarks/support/peer_scene.hpp: its positions, velocities and radii, linear
 // motion, no walls during the step), through the step pipeline the runner calls
-// (ccd/pipeline/step_pipeline.hpp). A continuous pipeline is a space-time bound (capsule,
+// (pipeline/step_pipeline.hpp). A continuous pipeline is a space-time bound (capsule,
 // swept_aabb: exact knowledge; horn:1 with A = 0, the true bound) + `grid` + the bound's
 // pair test + the exact first contact on the survivors; the discrete one is the `aabb`
 // bound at the step's start + `grid` + the bound's test + the narrow phase's sample test
@@ -30,7 +30,7 @@
 #include <benchmarks/support/peer_scene.hpp>
 #include <ccd/motion/state_cursor.hpp>
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <pipeline/step_pipeline.hpp>
 #include <ccd/queries/ray_sphere.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow_batch.hpp>

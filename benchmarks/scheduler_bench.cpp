@@ -1,7 +1,7 @@
-// The earliest-contact scheduler (ccd/pipeline/earliest_scheduler.hpp) against fixed steps
-// of the same bounds (ccd/pipeline/step_pipeline.hpp), over a whole horizon of 1 s, on two
+// The earliest-contact scheduler (pipeline/earliest_scheduler.hpp) against fixed steps
+// of the same bounds (pipeline/step_pipeline.hpp), over a whole horizon of 1 s, on two
 // scenes of the scheduling study (docs/studies.md), built here with a fixed seed. Both are
-// built by the scheduler registry's factory from their spec (ccd/pipeline/scheduler_registry.hpp)
+// built by the scheduler registry's factory from their spec (pipeline/scheduler_registry.hpp)
 // and run over the horizon through the Scheduler interface:
 //  - sparse_gas: 2,000 spheres of radius 1 at volume fraction 0.002 in a walled cube,
 //    velocities uniform in the ball of radius 20;
@@ -16,8 +16,8 @@
 //   scheduler_bench [benchmark flags]   e.g. --benchmark_repetitions=9 --benchmark_report_aggregates_only=true
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
-#include <ccd/pipeline/scheduler.hpp>
-#include <ccd/pipeline/scheduler_registry.hpp>
+#include <pipeline/scheduler.hpp>
+#include <pipeline/scheduler_registry.hpp>
 #include <ccd/util/thread_cpu_time.hpp>
 
 #include <benchmark/benchmark.h>

@@ -112,7 +112,7 @@ class Bound {
   /// (the pairs of a broad phase name scattered bodies), with the same answers.
   virtual void test_pairs(std::span<const BodyPair> pairs, std::vector<BodyPair>& passed,
                           std::vector<double>& earliest) const;
-  /// For a scheduler (ccd/pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
+  /// For a scheduler (pipeline/earliest_scheduler.hpp): rebuilds the data of `bodies`
   /// only, over the window [ctx.t0, ctx.t1], from ctx.start (indexed by body; only the
   /// listed entries are read) and writes their boxes into boxes[body]; every other body
   /// keeps its window and data. Without a `prepare` first, only the refreshed bodies

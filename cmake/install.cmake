@@ -20,7 +20,7 @@ install(TARGETS ccdlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/report.py ${PROJECT_SOURCE_DIR}/scripts/animate.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
 install(FILES ${PROJECT_SOURCE_DIR}/scripts/results_json.py DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
-foreach(dir ccd bounds cloth experiments)
+foreach(dir ccd bounds pipeline cloth experiments)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ccdlab/${dir}
     FILES_MATCHING PATTERN "*.hpp")
 endforeach()

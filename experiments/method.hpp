@@ -2,13 +2,13 @@
 // A method is a bound and a broad phase, named BOUND/BROADPHASE (e.g. "aabb/sap",
 // "capsule/grid", "horn:4/sap", "capsule/grid:cell=2"), optionally driven by a scheduler
 // named after "@" (BOUND/BROADPHASE@SCHEDULER, e.g. "horn:4/grid@earliest",
-// "capsule/sap@earliest:stale=0.5"; none means `fixed`: ccd/pipeline/scheduler_registry.hpp),
+// "capsule/sap@earliest:stale=0.5"; none means `fixed`: pipeline/scheduler_registry.hpp),
 // each part a spec with its options
 // (syntax in bounds/registry.hpp and ccd/broad_phase/registry.hpp). Both halves come from their registries
 // (bounds/registry.hpp, ccd/broad_phase/registry.hpp); this file only composes them.
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
-#include <ccd/pipeline/scheduler_registry.hpp>
+#include <pipeline/scheduler_registry.hpp>
 
 #include <nlohmann/json.hpp>
 #include <string>

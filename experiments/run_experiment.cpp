@@ -45,7 +45,7 @@ ccd::Scene read_experiment_scene(const Experiment& e, const std::string& file) {
 
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
   ccd::Scene scene = read_experiment_scene(e, file);
-  // The earliest-contact scheduler's images (ccd/pipeline/scheduler_images.hpp) carry
+  // The earliest-contact scheduler's images (pipeline/scheduler_images.hpp) carry
   // sphere paths only: in a wrapped scene it refuses shaped bodies.
   if (scene.wraps() && scene.has_non_spheres())
     for (std::size_t i = 0; i < e.methods.size(); ++i)

@@ -1,7 +1,7 @@
 #include "runner.hpp"
 
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
-#include <ccd/pipeline/scheduler.hpp>
+#include <pipeline/scheduler.hpp>
 #include <ccd/util/thread_cpu_time.hpp>
 
 #include <algorithm>
@@ -144,7 +144,7 @@ class ContactMatcher final : public ccd::ContactSink {
 };
 
 // One run of the method's scheduler over the horizon (fixed steps of dt, or the earliest
-// scheduler with windows of at most dt: ccd/pipeline/scheduler_registry.hpp), timed, its
+// scheduler with windows of at most dt: pipeline/scheduler_registry.hpp), timed, its
 // contacts matched with the truth.
 Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
   Counts c;

@@ -1,17 +1,17 @@
 #pragma once
 // Runs one method at one timestep over a scene and measures it against exact ground
 // truth (definitions in docs/experiments.md). The method's scheduler runs over the horizon
-// (ccd/pipeline/scheduler.hpp, built by the registry's factory); this file only counts, times
+// (pipeline/scheduler.hpp, built by the registry's factory); this file only counts, times
 // and matches:
 //  - samples t_k = k * dt (the product in double, never accumulated), every k >= 0 with
-//    t_k <= T (sample_count; fixed steps: ccd/pipeline/fixed_step_scheduler.hpp);
+//    t_k <= T (sample_count; fixed steps: pipeline/fixed_step_scheduler.hpp);
 //  - a discrete method (an Instant bound) checks overlap at each sample: an event is
 //    detected if the method confirms the pair at some t_k in [enter, exit], else missed;
 //  - a continuous method checks each step [t_k, t_{k+1}] (and the last partial step): an
 //    event is detected when the pair is confirmed by the exact narrow phase in a step
 //    that contains its enter time;
 //  - a scheduled method (BOUND/BROADPHASE@earliest) runs the earliest scheduler over the
-//    whole horizon with windows of at most dt (ccd/pipeline/earliest_scheduler.hpp): an
+//    whole horizon with windows of at most dt (pipeline/earliest_scheduler.hpp): an
 //    event is detected when the pair is confirmed by a narrow call whose interval
 //    contains its enter time.
 #include "method.hpp"
@@ -20,7 +20,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 
 #include <ccd/motion/trajectory.hpp>
-#include <ccd/pipeline/fixed_step_scheduler.hpp>
+#include <pipeline/fixed_step_scheduler.hpp>
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>

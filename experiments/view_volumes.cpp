@@ -4,8 +4,8 @@
 #include "view_data.hpp"
 
 #include <ccd/motion/rigid_motion.hpp>
-#include <ccd/pipeline/fixed_step_scheduler.hpp>
-#include <ccd/pipeline/window_policy.hpp>
+#include <pipeline/fixed_step_scheduler.hpp>
+#include <pipeline/window_policy.hpp>
 
 #include <algorithm>
 #include <cmath>

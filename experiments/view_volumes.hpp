@@ -4,7 +4,7 @@
 //
 // For a run of a results file (its method and dt), each body's windows are those the run
 // built its bound over: the fixed steps [k dt, (k+1) dt] (an instant bound at k dt), or for
-// an `@earliest` method each body's own windows (ccd/pipeline/window_policy.hpp: dt, or
+// an `@earliest` method each body's own windows (pipeline/window_policy.hpp: dt, or
 // speed-adapted with `reach`, aligned or not), each built from the body's state at its
 // start by Bound::refresh as the scheduler builds it. Not shown: the scheduler's refined
 // bounds of a pair (built from a check time on, and with `refresh_bodies` the body

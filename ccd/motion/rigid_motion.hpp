@@ -40,7 +40,7 @@ class RigidMotion {
   /// trajectories, reusing this object's storage). `centres` must outlive this object's use.
   void assign_spheres(const Trajectories& centres);
   /// Makes this the motion of the local bodies of one step [t0, t1] of a scene that wraps
-  /// around (ccd/pipeline/periodic_images.hpp): body i is `source`'s body owner[i] (its
+  /// around (pipeline/periodic_images.hpp): body i is `source`'s body owner[i] (its
   /// shape and spin; the spin pieces that overlap [t0, t1], so every query inside the step
   /// answers as `source`'s) with its centre on path i of `centres` (the body's unwrapped
   /// path or an image's). `centres` must outlive this object's use; storage is reused.

@@ -71,7 +71,7 @@ class Rotations {
   double orientation_error(std::size_t body, double t) const { return piece_at(body, t).orientation_error(t); }
   /// Makes body i of this set turn as body owner[i] of `source`, keeping only the pieces
   /// that overlap [t0, t1]: every query inside [t0, t1] answers as `source`'s does (the
-  /// bodies and periodic images of one step, ccd/pipeline/periodic_images.hpp). Empty when
+  /// bodies and periodic images of one step, pipeline/periodic_images.hpp). Empty when
   /// `source` is. Reuses the storage.
   void assign_owners(const Rotations& source, std::span<const std::uint32_t> owner, double t0, double t1);
   /// Empty again (no bodies turn), keeping the storage.

@@ -1,7 +1,7 @@
 #pragma once
 // A box that loops around on some axes (`"boundary": "wrap"`, docs/formats.md): the
 // periodic images of a body and the image shifts that contact tests, the ground truth and
-// the generic image layer of the step pipeline (ccd/pipeline/periodic_images.hpp) use.
+// the generic image layer of the step pipeline (pipeline/periodic_images.hpp) use.
 //
 // On a wrapped axis k the scene is periodic with period L_k = max_k - min_k (the exact
 // real difference of the two doubles, kept as a double-double): a body and its images at

@@ -6,7 +6,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <pipeline/step_pipeline.hpp>
 #include <experiments/generators/registry.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/queries/convex_distance.hpp>

@@ -10,7 +10,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <pipeline/step_pipeline.hpp>
 #include <ccd/scene/scene_io.hpp>
 #include <ccd/truth/truth.hpp>
 #include <iostream>

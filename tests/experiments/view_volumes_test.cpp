@@ -7,7 +7,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <ccd/pipeline/window_policy.hpp>
+#include <pipeline/window_policy.hpp>
 
 #include <catch2/catch.hpp>
 

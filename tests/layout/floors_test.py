@@ -26,7 +26,7 @@ FLOORS = [
     ["ccd/truth/"],
     ["ccd/narrow/"],
     ["bounds/"],
-    ["ccd/pipeline/"],
+    ["pipeline/"],
     ["cloth/"],
     ["experiments/generators/"],
     ["experiments/"],  # the runners, results, the viewer's data: the longer prefixes around it win

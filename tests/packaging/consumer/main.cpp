@@ -3,7 +3,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
-#include <ccd/pipeline/step_pipeline.hpp>
+#include <pipeline/step_pipeline.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <experiments/generators/registry.hpp>
 #include <iostream>
