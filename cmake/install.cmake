@@ -16,7 +16,7 @@ install(TARGETS ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_cloth ccdlab_ru
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ccdlab)
 install(TARGETS ccdlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# The scripts behind `ccdlab report` and `ccdlab animate` (experiments/commands/python_script.hpp).
+# The scripts behind `ccdlab report` and `ccdlab animate` (cli/python_script.hpp).
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/report.py ${PROJECT_SOURCE_DIR}/scripts/animate.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
 install(FILES ${PROJECT_SOURCE_DIR}/scripts/results_json.py DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)

@@ -63,7 +63,7 @@ PairWork pair_window_work(const ccd::RigidMotion& motion, std::size_t windows = 
 /// exit bracketed to 2^-30 of the horizon, about 30 halvings each. Deep (the shapes
 /// turning inside each other all along): measured on piles of
 /// spinning boxes at one point (every pair deep in every window), 1 thread, with
-/// `ccdlab truth PILE.json --threads 1` (the pile of tests/experiments/hostile_outputs_test.cpp)
+/// `ccdlab truth PILE.json --threads 1` (the pile of tests/cli/hostile_outputs_test.cpp)
 /// on a shared 2-core machine under other builds (seconds, fastest first):
 ///   10 boxes (45 pairs):   23.7, 33.0, 55.4, 84.8;  deep pair_window_work 2.02e4
 ///   20 boxes (190 pairs):  98.0, 132.1, 181.6;      deep pair_window_work 8.49e4

@@ -2,7 +2,7 @@
 // filled in, one error line per bad field, results and summary written, the mesh truth
 // stored once and read back.
 #include "../../experiments/cloth_experiment.hpp"
-#include "cli_support.hpp"
+#include "../cli/cli_support.hpp"
 
 #include <ccd/io/input_error.hpp>
 #include <cloth/cull/cullers.hpp>

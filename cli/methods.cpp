@@ -2,7 +2,7 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../method.hpp"
+#include "../experiments/method.hpp"
 
 #include <iomanip>
 #include <iostream>

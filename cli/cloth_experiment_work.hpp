@@ -2,7 +2,7 @@
 // The work of a cloth experiment (`ccdlab run` of a ccdlab-cloth-experiment/1 file),
 // estimated before the simulation and refused past its limits unless --force
 // (experiments/work_estimate.hpp, docs/formats.md "Work estimates and `--force`").
-#include "../cloth_experiment.hpp"
+#include "../experiments/cloth_experiment.hpp"
 
 #include <cloth/sim/cloth_scene.hpp>
 

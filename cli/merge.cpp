@@ -2,8 +2,8 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../results_file.hpp"
-#include "../summary.hpp"
+#include "../experiments/results_file.hpp"
+#include "../experiments/summary.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>

@@ -2,7 +2,7 @@
 // summary and the missed list after it count the body-scenery contacts with the
 // body-body ones. At 60 Hz aabb/grid misses no body-body contact but floor contacts, so
 // its zero-miss frontier is 120 Hz, not 60 Hz.
-#include "../cli_support.hpp"
+#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <fstream>

@@ -4,9 +4,9 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../view_data.hpp"
-#include "../view_page.hpp"
-#include "../work_estimate.hpp"
+#include "../experiments/view_data.hpp"
+#include "../experiments/view_page.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>

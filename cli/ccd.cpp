@@ -4,7 +4,7 @@
 #include "command_line.hpp"
 #include "mesh_ccd_command.hpp"
 
-#include "../work_estimate.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <cloth/ccd/hard_queries.hpp>
 #include <cloth/cull/cullers.hpp>

@@ -1,12 +1,12 @@
-// The one argument parser (experiments/commands/command_line.hpp): in-process, what it
+// The one argument parser (cli/command_line.hpp): in-process, what it
 // accepts and the one line it throws for each kind of bad usage; through the ccdlab
 // program, that every command and subcommand prints a help listing each of its options
 // with a description, names an unknown option (exit 2, one line), and names the option
 // whose number is malformed.
-#include "../cli_support.hpp"
+#include "cli_support.hpp"
 
-#include <experiments/commands/command.hpp>
-#include <experiments/commands/command_line.hpp>
+#include <cli/command.hpp>
+#include <cli/command_line.hpp>
 
 #include <catch2/catch.hpp>
 #include <algorithm>

@@ -1,5 +1,5 @@
 #pragma once
-// The subcommands of `ccdlab cloth` (one command family, experiments/commands/cloth.cpp
+// The subcommands of `ccdlab cloth` (one command family, cli/cloth.cpp
 // dispatches): `ccdlab cloth frames` (cloth_frames.cpp) and `ccdlab cloth queries`
 // (cloth_queries.cpp).
 #include <cloth/sim/cloth_scene.hpp>

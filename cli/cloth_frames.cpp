@@ -5,7 +5,7 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../work_estimate.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <cloth/sim/cloth_simulator.hpp>
 #include <cloth/truth/mesh_truth_file.hpp>

@@ -3,8 +3,8 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../progress.hpp"
-#include "../work_estimate.hpp"
+#include "../experiments/progress.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/trajectory.hpp>

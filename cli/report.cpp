@@ -6,7 +6,7 @@
 #include "command_line.hpp"
 #include "python_script.hpp"
 
-#include "../results_file.hpp"
+#include "../experiments/results_file.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>

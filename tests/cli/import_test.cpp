@@ -1,7 +1,7 @@
 // `ccdlab import`: the round trip with `ccdlab poses` (poses of a linear-motion scene,
 // imported back, give the same truth), its options, and bad input refused with exit 2,
 // the line and the column named, and no file written.
-#include "../cli_support.hpp"
+#include "cli_support.hpp"
 
 #include <ccd/scene/scene_io.hpp>
 

@@ -5,8 +5,8 @@
 #include "command.hpp"
 #include "mesh_ccd_command.hpp"
 
-#include "../environment.hpp"
-#include "../progress.hpp"
+#include "../experiments/environment.hpp"
+#include "../experiments/progress.hpp"
 
 #include <cloth/cull/cullers.hpp>
 #include <cloth/io/mesh_file.hpp>

@@ -7,7 +7,7 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../work_estimate.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <cloth/io/ply_writer.hpp>
 #include <cloth/mesh_ccd/mesh_frames.hpp>

@@ -2,7 +2,7 @@
 // (digest included) as its JSON file through every command that reads scenes, unpacks to
 // the same JSON text, and damaged or unsupported input exits 2 with one line naming the
 // file and the field, writing nothing.
-#include "../cli_support.hpp"
+#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 // The ccdlab command line: one registry of subcommands. Each subcommand lives in its own
-// file under experiments/commands/ and registers itself in commands.cpp's table; each
+// file under cli/ and registers itself in commands.cpp's table; each
 // parses its arguments, --help included, with CommandLine (command_line.hpp).
 //
 // Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).
@@ -17,7 +17,7 @@ struct Command {
   int (*run)(std::span<const std::string> args);  ///< args exclude the command name
 };
 
-/// The one table of subcommands (experiments/commands/commands.cpp).
+/// The one table of subcommands (cli/commands.cpp).
 std::span<const Command> commands();
 
 /// Version string "X.Y.Z (git HASH)".

@@ -1,5 +1,5 @@
 // ccdlab: continuous collision detection laboratory. `ccdlab --help` lists the commands.
-#include "commands/command.hpp"
+#include "command.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 

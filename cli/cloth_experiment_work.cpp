@@ -2,7 +2,7 @@
 
 #include "cloth_subcommands.hpp"
 
-#include "../work_estimate.hpp"
+#include "../experiments/work_estimate.hpp"
 
 namespace ccdlab {
 

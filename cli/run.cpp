@@ -4,12 +4,12 @@
 #include "command_line.hpp"
 
 #include "cloth_experiment_work.hpp"
-#include "../run_cloth_experiment.hpp"
-#include "../prepare_run.hpp"
-#include "../run_experiment.hpp"
-#include "../missed_list.hpp"
-#include "../summary.hpp"
-#include "../work_estimate.hpp"
+#include "../experiments/run_cloth_experiment.hpp"
+#include "../experiments/prepare_run.hpp"
+#include "../experiments/run_experiment.hpp"
+#include "../experiments/missed_list.hpp"
+#include "../experiments/summary.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/json_reader.hpp>

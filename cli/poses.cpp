@@ -4,7 +4,7 @@
 #include "command.hpp"
 #include "command_line.hpp"
 
-#include "../work_estimate.hpp"
+#include "../experiments/work_estimate.hpp"
 
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/motion/rotation.hpp>
