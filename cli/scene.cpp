@@ -5,7 +5,7 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <algorithm>
 #include <cstdint>

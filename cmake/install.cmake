@@ -1,16 +1,17 @@
 # `cmake --install BUILD [--prefix P]` installs the libraries, their headers (under
 # include/ccdlab/, so that ccdlab's ccd/ folder never mixes with libccd's), the ccdlab
 # program and a CMake package: find_package(ccdlab) gives ccdlab::core, ccdlab::bounds,
-# ccdlab::pipeline, ccdlab::cloth, ccdlab::runner and ccdlab::ccdlab (all of them).
+# ccdlab::pipeline, ccdlab::cloth, ccdlab::generators, ccdlab::runner and ccdlab::ccdlab (all of them).
 include(CMakePackageConfigHelpers)
 
 add_library(ccdlab_all INTERFACE)
 add_library(ccdlab::ccdlab ALIAS ccdlab_all)
 set_target_properties(ccdlab_all PROPERTIES EXPORT_NAME ccdlab)
-target_link_libraries(ccdlab_all INTERFACE ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_cloth ccdlab_runner)
+target_link_libraries(ccdlab_all INTERFACE ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_cloth ccdlab_generators
+  ccdlab_runner)
 
 set(CCDLAB_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/ccdlab)
-install(TARGETS ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_cloth ccdlab_runner ccdlab_all
+install(TARGETS ccdlab_core ccdlab_bounds ccdlab_pipeline ccdlab_cloth ccdlab_generators ccdlab_runner ccdlab_all
   EXPORT ccdlabTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -20,7 +21,7 @@ install(TARGETS ccdlab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/scripts/report.py ${PROJECT_SOURCE_DIR}/scripts/animate.py
   DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
 install(FILES ${PROJECT_SOURCE_DIR}/scripts/results_json.py DESTINATION ${CMAKE_INSTALL_DATADIR}/ccdlab/scripts)
-foreach(dir ccd bounds pipeline cloth experiments)
+foreach(dir ccd bounds pipeline cloth generators experiments)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/ccdlab/${dir}
     FILES_MATCHING PATTERN "*.hpp")
 endforeach()

@@ -1,7 +1,7 @@
 #include "experiment.hpp"
 
 #include "method.hpp"
-#include "generators/registry.hpp"
+#include "../generators/registry.hpp"
 
 #include <ccd/io/utf8_text.hpp>
 #include <ccd/io/json_reader.hpp>

@@ -1,7 +1,7 @@
 #include "run_experiment.hpp"
 
 #include "environment.hpp"
-#include "generators/registry.hpp"
+#include "../generators/registry.hpp"
 #include "method.hpp"
 #include "progress.hpp"
 #include "runner.hpp"

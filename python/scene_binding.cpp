@@ -4,7 +4,7 @@
 
 #include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <stdexcept>
 

@@ -7,7 +7,7 @@
 #include <ccd/broad_phase/registry.hpp>
 #include <ccd/motion/state_cursor.hpp>
 #include <pipeline/step_pipeline.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/queries/convex_distance.hpp>
 #include <ccd/scene/scene.hpp>

@@ -1,6 +1,6 @@
 // The `ccdlab scene` command, run as the built binary (CCDLAB_BINARY).
 #include <ccd/scene/scene_io.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <algorithm>
 #include <catch2/catch.hpp>

@@ -8,7 +8,7 @@
 #include "../../experiments/runner.hpp"
 #include "method_cover.hpp"
 
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <catch2/catch.hpp>
 

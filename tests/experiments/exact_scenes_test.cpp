@@ -10,7 +10,7 @@
 #include "method_cover.hpp"
 
 #include <ccd/truth/ground_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <tests/ccd/scene/body_builder.hpp>
 

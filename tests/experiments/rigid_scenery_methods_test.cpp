@@ -12,7 +12,7 @@
 #include <bounds/registry.hpp>
 #include <ccd/truth/rigid_static_truth.hpp>
 #include <ccd/truth/rigid_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <algorithm>
 #include <catch2/catch.hpp>

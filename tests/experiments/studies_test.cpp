@@ -1,7 +1,7 @@
 // Small versions of the stability studies (docs/studies.md, data/experiments/<study>*.json),
 // run through the runner library on small generated scenes, asserting each study's key
 // outcome. Counts only: speed is never asserted.
-#include "../../experiments/generators/registry.hpp"
+#include "../../generators/registry.hpp"
 #include "../../experiments/runner.hpp"
 
 #include <ccd/geometry/aabb.hpp>

@@ -12,7 +12,7 @@
 
 #include <ccd/io/input_error.hpp>
 #include <ccd/truth/ground_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -11,7 +11,7 @@
 
 #include <ccd/io/input_error.hpp>
 #include <ccd/truth/rigid_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <catch2/catch.hpp>
 

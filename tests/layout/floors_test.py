@@ -28,8 +28,8 @@ FLOORS = [
     ["bounds/"],
     ["pipeline/"],
     ["cloth/"],
-    ["experiments/generators/"],
-    ["experiments/"],  # the runners, results, the viewer's data: the longer prefix generators/ wins
+    ["generators/"],
+    ["experiments/"],  # the runners, results, the viewer's data
     ["cli/"],
     ["python/", "benchmarks/", "fuzz/", "tests/", "examples/"],
 ]

@@ -17,7 +17,7 @@
 #include <ccd/truth/rigid_static_truth.hpp>
 #include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <tests/ccd/scene/body_builder.hpp>
 #include <tests/ccd/scene/rigid_scenery_scenes.hpp>

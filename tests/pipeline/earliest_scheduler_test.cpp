@@ -10,7 +10,7 @@
 #include <pipeline/earliest_scheduler.hpp>
 #include <tests/pipeline/earliest_under_test.hpp>
 #include <ccd/truth/ground_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <tests/ccd/scene/body_builder.hpp>
 #include <tests/ccd/scene/periodic_scenes.hpp>

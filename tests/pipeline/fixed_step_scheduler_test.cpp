@@ -7,7 +7,7 @@
 #include <pipeline/fixed_step_scheduler.hpp>
 #include <pipeline/scheduler_registry.hpp>
 #include <ccd/truth/ground_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 #include <experiments/runner.hpp>
 
 #include <catch2/catch.hpp>

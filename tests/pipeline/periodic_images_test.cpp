@@ -9,7 +9,7 @@
 #include <pipeline/step_pipeline.hpp>
 #include <ccd/truth/contact_function.hpp>
 #include <ccd/truth/pair_contact.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <catch2/catch.hpp>
 #include <set>

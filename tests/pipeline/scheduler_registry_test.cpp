@@ -2,7 +2,7 @@
 
 #include <pipeline/earliest_scheduler.hpp>
 #include <pipeline/fixed_step_scheduler.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <catch2/catch.hpp>
 

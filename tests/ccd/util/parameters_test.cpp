@@ -1,5 +1,5 @@
 #include <ccd/util/parameters.hpp>
-#include <experiments/generators/generator_parameters.hpp>
+#include <generators/generator_parameters.hpp>
 
 #include <catch2/catch.hpp>
 #include <limits>

@@ -5,7 +5,7 @@
 #include <ccd/motion/state_cursor.hpp>
 #include <pipeline/step_pipeline.hpp>
 #include <ccd/truth/ground_truth.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 #include <iostream>
 
 int main() {

@@ -11,10 +11,10 @@
 // the velocity, the orientation (4 normal numbers), the spin axis and rate. With free = 1
 // the same bodies tumble torque-free from that angular velocity (docs/rigid_bodies.md); with
 // wrap = 1 the box loops around on every axis (docs/periodic.md).
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/placement.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <ccd/shape/mass_properties.hpp>
 

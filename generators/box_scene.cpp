@@ -1,4 +1,4 @@
-#include <experiments/generators/box_scene.hpp>
+#include <generators/box_scene.hpp>
 
 namespace ccdlab {
 

@@ -1,9 +1,9 @@
 // `mixed`: moving spheres whose radii span orders of magnitude (log-uniform), in a box:
 // the case that defeats a single grid cell size.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/placement.hpp>
+#include <generators/sampling.hpp>
 
 #include <algorithm>
 #include <cmath>

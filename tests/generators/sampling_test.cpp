@@ -1,4 +1,4 @@
-#include <experiments/generators/sampling.hpp>
+#include <generators/sampling.hpp>
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -5,9 +5,9 @@
 // and the offset of the passing line is a difference of exactly representable
 // coordinates, so the closest distance computed from the scene is exactly the intended
 // one (see docs/generators.md).
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <cmath>
 #include <limits>

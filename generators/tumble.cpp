@@ -4,10 +4,10 @@
 // bounce off the box walls (as their enclosing spheres) and pass through the ramp, so the
 // static contacts are where a spinning shape, not its enclosing sphere, meets a polygon:
 // whether a body touches the floor at a bounce depends on its orientation then. y is up.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/placement.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <ccd/scene/scenery.hpp>
 #include <ccd/shape/shape.hpp>

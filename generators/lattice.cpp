@@ -2,9 +2,9 @@
 // centre is (2i + 2) r on every axis, with r a power of two, so all coordinates, gaps and
 // distances are exact (neighbour distance == 2r). Degenerate on purpose: equal
 // coordinates everywhere and tangent contacts at t = 0.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <cmath>
 #include <stdexcept>

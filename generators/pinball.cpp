@@ -2,10 +2,10 @@
 // scenery, docs/scenery.md) at random places and headings. A ball moves much further in a
 // step than its diameter, so a method that samples positions tunnels through obstacles.
 // Scenery does not push bodies: the balls bounce off the box walls only. y is up.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/placement.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <ccd/scene/scenery.hpp>
 

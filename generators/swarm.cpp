@@ -1,9 +1,9 @@
 // `swarm`: Hubbard's setting. Bodies in a box with bounded, piecewise-constant random
 // accelerations: |a| <= max_acceleration at all times, changing at known times.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/placement.hpp>
+#include <generators/sampling.hpp>
 
 #include <algorithm>
 #include <vector>

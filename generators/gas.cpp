@@ -1,9 +1,9 @@
 // `gas`: spheres in a box moving in straight lines (no gravity, elastic walls, or with
 // wrap=1 a box that loops around on every axis).
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/placement.hpp>
+#include <generators/sampling.hpp>
 
 namespace ccdlab {
 namespace {

@@ -1,4 +1,4 @@
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 #include <ccd/util/nearest_name.hpp>
 
 #include <ccd/io/input_error.hpp>

@@ -1,7 +1,7 @@
 // Every generator's scene through the binary scene format (ccd/scene/scene_binary.hpp): the
 // sphere scenes read back bit for bit with the digest of their JSON file; the others
 // (shapes, spin, scenery) are refused by name.
-#include "../../ccd/scene/binary_scene_support.hpp"
+#include "../ccd/scene/binary_scene_support.hpp"
 #include "generator_test_support.hpp"
 
 #include <ccd/io/input_error.hpp>

@@ -3,7 +3,7 @@
 // walls [0, box_max] (the offset is applied later by generate_scene), and `bodies`
 // default-initialised bodies for the generator to fill in.
 #include <ccd/scene/scene.hpp>
-#include <experiments/generators/generator_parameters.hpp>
+#include <generators/generator_parameters.hpp>
 
 namespace ccdlab {
 

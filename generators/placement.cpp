@@ -1,4 +1,4 @@
-#include <experiments/generators/placement.hpp>
+#include <generators/placement.hpp>
 
 #include <cmath>
 

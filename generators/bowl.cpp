@@ -3,10 +3,10 @@
 // bounce is a real contact) and slanted sides given as a triangle mesh up to a wider rim.
 // Scenery does not push bodies: the balls bounce off the box walls and cross the bowl's
 // sides, which is what the contacts count. y is up.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/placement.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <ccd/scene/scenery.hpp>
 

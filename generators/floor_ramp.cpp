@@ -5,9 +5,9 @@
 // passes the ramp's lower edge an acceleration change leaves it to gravity: it drops onto
 // the floor polygon (a little above the box floor, so every bounce is a real contact) and
 // bounces on between the walls. y is up.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/sampling.hpp>
 
 #include <ccd/scene/scenery.hpp>
 

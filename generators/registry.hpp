@@ -1,7 +1,7 @@
 #pragma once
 // The one table of scene generators: {name, description, parameters, function}. The
 // `ccdlab scene` command, the experiment runner, the tests and docs/generators.md all
-// read it, so a new generator is one file under experiments/generators/ plus one entry
+// read it, so a new generator is one file under generators/ plus one entry
 // in registry.cpp.
 //
 // Every generator has the parameters seed, bodies, horizon and offset (first, in this
@@ -18,7 +18,7 @@
 // callers prefix their context. A generator that breaks its own guarantee throws
 // std::logic_error.
 #include <ccd/scene/scene.hpp>
-#include <experiments/generators/generator_parameters.hpp>
+#include <generators/generator_parameters.hpp>
 
 #include <nlohmann/json.hpp>
 #include <span>

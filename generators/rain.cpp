@@ -1,10 +1,10 @@
 // `rain`: balls falling under gravity in a tall column onto the floor of a box; every
 // wall (the floor too) is elastic, so the balls bounce back up. Everything moves along y,
 // the worst axis for sweep and prune.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/placement.hpp>
+#include <generators/sampling.hpp>
 
 namespace ccdlab {
 namespace {

@@ -1,9 +1,9 @@
 // `bullets`: a slow field of larger spheres and a few small fast spheres aimed at field
 // bodies: the case where a discrete check at a coarse timestep tunnels through contacts.
-#include <experiments/generators/box_scene.hpp>
-#include <experiments/generators/registry.hpp>
-#include <experiments/generators/placement.hpp>
-#include <experiments/generators/sampling.hpp>
+#include <generators/box_scene.hpp>
+#include <generators/registry.hpp>
+#include <generators/placement.hpp>
+#include <generators/sampling.hpp>
 
 #include <algorithm>
 

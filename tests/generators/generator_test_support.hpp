@@ -1,7 +1,7 @@
 #pragma once
 // Helpers shared by the generator tests.
 #include <ccd/scene/scene_io.hpp>
-#include <experiments/generators/registry.hpp>
+#include <generators/registry.hpp>
 
 #include <nlohmann/json.hpp>
 #include <string_view>
