@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `pip install --no-build-isolation` of the Python package (pyproject.toml, setup.py) into a
 # fresh venv, offline, and `pip wheel`: the venv's ccdlab is the installed module and computes
-# a truth equal to the build tree's module. The build reuses this build folder
+# a truth equal to the build tree's module. Then `python3 -m build --no-isolation --wheel`
+# (Debian's python3-build): its wheel installs into another fresh venv and imports. The build reuses this build folder
 # (CCDLAB_BUILD_DIR: only the module target, up to date here) so the test takes seconds; a
 # user's `pip install` configures and builds its own (setup.py).
 # Usage: pip_install_test.sh SOURCE_DIR BUILD_DIR
