@@ -19,7 +19,6 @@ miss nothing).
 import argparse
 import os
 import sys
-import tempfile
 
 import numpy as np
 
@@ -57,12 +56,9 @@ print(truth)
 
 # %% Which contacts does each method miss? A discrete AABB test and a continuous capsule
 # bound (conservative: it must miss nothing), both over a uniform grid, at 30 to 480 Hz.
-os.makedirs(args.output, exist_ok=True)
-with tempfile.TemporaryDirectory() as tmp:
-    scene.save(os.path.join(tmp, "scene.json"))
-    results = ccdlab.run({"format": "ccdlab-experiment/1", "scene": os.path.join(tmp, "scene.json"),
-                          "hz": [30, 60, 120, 240, 480], "methods": ["aabb/grid", "capsule/grid"]},
-                         missed_events=True)
+# The scene goes to the run as it is, in memory.
+results = ccdlab.run({"format": "ccdlab-experiment/1", "scene": scene, "hz": [30, 60, 120, 240, 480],
+                      "methods": ["aabb/grid", "capsule/grid"]}, missed_events=True)
 print(results)
 at_60 = results.missed("aabb/grid", 1 / 60)
 record = results.record("aabb/grid", 1 / 60)
@@ -73,21 +69,12 @@ for m in at_60[:10]:
 if len(at_60) > 10:
     print(f"  ... and {len(at_60) - 10} more")
 
-# %% A chart: the missed fraction against the timestep, per method.
-import matplotlib  # noqa: E402
+# %% A chart: the missed fraction against the timestep, per method (the chart of
+# scripts/plot.py, as a matplotlib Figure).
+import ccdlab.plot  # noqa: E402  (needs matplotlib)
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-fig, ax = plt.subplots(figsize=(6, 4))
-for method in results.methods():
-    rs = sorted((r for r in results.records if r["method"] == method), key=lambda r: r["dt"])
-    ax.plot([r["hz"] for r in rs], [r["missed_fraction"] for r in rs], marker="o", label=method)
-ax.set_xscale("log", base=2)
-ax.set_xlabel("checks per second (Hz)")
-ax.set_ylabel("missed fraction of contacts")
-ax.set_title(f"{n} bouncing balls, {truth.__len__()} contacts")
-ax.legend()
+fig = ccdlab.plot.missed(results)
+os.makedirs(args.output, exist_ok=True)
 chart = os.path.join(args.output, "missed.png")
 fig.savefig(chart, dpi=100, bbox_inches="tight")
 print(f"chart: {chart}")

@@ -56,9 +56,14 @@ PreparedRun prepare_run(Experiment e, const std::string& file, const RunRequest&
   run.shard = request.shard;
   run.truth_file = request.truth_file;
   if (request.list_missed) e.list_missed = true;
-  set(doing, e.scene_path.empty() ? "generating the scene " + e.scene_generator.dump()
-                                  : "reading the scene " + e.scene_path);
-  run.scene = load_experiment_scene(e, file);
+  if (request.scene) {
+    run.scene = *request.scene;
+    check_experiment_scene(e, run.scene, file);
+  } else {
+    set(doing, e.scene_path.empty() ? "generating the scene " + e.scene_generator.dump()
+                                    : "reading the scene " + e.scene_path);
+    run.scene = load_experiment_scene(e, file);
+  }
   check_dt_against_horizon(e, run.scene.horizon, file);
   if (!run.truth_file.empty()) {
     set(doing, "reading " + run.truth_file);

@@ -21,6 +21,9 @@ struct RunRequest {
   bool force = false;      ///< run past the work limits
   bool list_missed = false;
   Shard shard;
+  /// A scene given in memory (Python's ccdlab.run), run instead of the experiment's scene
+  /// field (which then only names it in the results); null: the experiment's.
+  const ccd::Scene* scene = nullptr;
 };
 
 /// A run ready to start: everything checked, nothing computed yet.

@@ -3,10 +3,12 @@
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
+#include <utility>
 
 namespace ccdlab {
 
-Progress::Progress(std::size_t total, bool quiet) : total_(total), quiet_(quiet), tty_(::isatty(2) != 0) {}
+Progress::Progress(std::size_t total, bool quiet, Observer observer)
+    : total_(total), quiet_(quiet), tty_(::isatty(2) != 0), observer_(std::move(observer)) {}
 
 std::string Progress::duration(double seconds) {
   const auto s = static_cast<long long>(std::ceil(std::max(0.0, seconds)));
@@ -62,9 +64,10 @@ void Progress::advance(const std::string& what, std::size_t done, std::size_t to
 }
 
 void Progress::done(const std::string& label) {
-  if (quiet_) return;
   std::lock_guard<std::mutex> lock(mutex_);
   ++done_;
+  if (observer_) observer_(done_, total_);
+  if (quiet_) return;
   const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
   const double left = elapsed / double(done_) * double(total_ - std::min(done_, total_));
   draw(done_, total_, "jobs", left, label);
@@ -73,6 +76,7 @@ void Progress::done(const std::string& label) {
 void Progress::start_jobs() {
   std::lock_guard<std::mutex> lock(mutex_);
   start_ = Clock::now();
+  if (observer_) observer_(done_, total_);
 }
 
 void Progress::finish() {

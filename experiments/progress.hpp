@@ -3,8 +3,11 @@
 // (`[#########.....]  45%  12/27 jobs  1m20s left  aabb/sap dt=0.01`); otherwise one plain
 // line per finished job with the same counts and estimate; nothing when quiet.
 // Thread-safe. The estimate is the mean time per finished job times the jobs left.
+// An observer, when given, is told the jobs done and their total as they finish, quiet or
+// not (Python's ccdlab.run(progress=...)).
 #include <chrono>
 #include <cstddef>
+#include <functional>
 #include <mutex>
 #include <string>
 
@@ -12,7 +15,10 @@ namespace ccdlab {
 
 class Progress {
  public:
-  Progress(std::size_t total, bool quiet);
+  /// observer(done, total): jobs finished of the total, called once when the jobs start
+  /// (done 0) and after each job, from the thread that ran it, under the progress lock.
+  using Observer = std::function<void(std::size_t done, std::size_t total)>;
+  Progress(std::size_t total, bool quiet, Observer observer = {});
   /// Announces a phase that is not counted in jobs (e.g. "computing ground truth").
   void phase(const std::string& what);
   /// Part of an uncounted phase: `done` of `total` units of `what` (e.g. candidate pairs
@@ -39,6 +45,7 @@ class Progress {
   std::size_t done_ = 0;
   bool quiet_;
   bool tty_;
+  Observer observer_;
   bool bar_open_ = false;  // a bar line is on screen, not yet ended
   Clock::time_point start_ = Clock::now();
   std::string phase_;  // the fractional phase being drawn

@@ -45,6 +45,11 @@ ccd::Scene read_experiment_scene(const Experiment& e, const std::string& file) {
 
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
   ccd::Scene scene = read_experiment_scene(e, file);
+  check_experiment_scene(e, scene, file);
+  return scene;
+}
+
+void check_experiment_scene(const Experiment& e, const ccd::Scene& scene, const std::string& file) {
   // The earliest-contact scheduler's images (pipeline/scheduler_images.hpp) carry
   // sphere paths only: in a wrapped scene it refuses shaped bodies.
   if (scene.wraps() && scene.has_non_spheres())
@@ -53,7 +58,6 @@ ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file) {
         throw ccd::InputError(file, "methods[" + std::to_string(i) + "]",
                               "@earliest takes plain spheres only in a scene that wraps around (box.boundary "
                               "\"wrap\"); use the fixed-step method " + e.methods[i].fixed_step_name());
-  return scene;
 }
 
 namespace {
@@ -138,7 +142,7 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
       if (options.shard.owns(index)) jobs.push_back({index, e.methods[m], e.dt[d], e.hz[d]});
     }
 
-  Progress progress(jobs.size(), options.quiet);
+  Progress progress(jobs.size(), options.quiet, options.progress);
   progress.phase("scene: " + std::to_string(scene.bodies.size()) + " bodies, horizon " +
                  std::to_string(scene.horizon) + " s; " +
                  (options.truth ? "ground truth from " + options.truth_file : std::string("computing exact ground truth")));

@@ -4,6 +4,7 @@
 // document (docs/experiments.md). Counts do not depend on the thread count: every job is
 // independent and results are stored by job index.
 #include "experiment.hpp"
+#include "progress.hpp"
 
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -29,10 +30,15 @@ struct RunOptions {
   /// check_stored_truth) used instead of computing it; null: compute it.
   const ccd::TruthFile* truth = nullptr;
   std::string truth_file;  ///< where `truth` came from (recorded in the results)
+  /// Told the jobs done and their total as they finish (Progress::Observer); empty: nobody.
+  Progress::Observer progress;
 };
 
 /// The experiment's scene (file or generator). Throws ccd::InputError naming `file`.
 ccd::Scene load_experiment_scene(const Experiment& e, const std::string& file);
+/// Checks that the methods of `e` can run on `scene` (load_experiment_scene does; for a
+/// scene given otherwise, e.g. in memory). Throws ccd::InputError naming `file`.
+void check_experiment_scene(const Experiment& e, const ccd::Scene& scene, const std::string& file);
 
 /// Checks that `truth` (read from `file`) is the ground truth of `scene`: a version 2
 /// file's scene digest must equal the scene's (ccd/scene/scene_digest.hpp); any version's

@@ -62,6 +62,7 @@ void bind_bounds(py::module_& m);
 void bind_run(py::module_& m);
 void bind_mesh_ccd(py::module_& m);
 void bind_queries(py::module_& m);
+void bind_rigid_queries(py::module_& m);
 void bind_import(py::module_& m);
 
 }  // namespace ccdlab::python

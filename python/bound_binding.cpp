@@ -117,7 +117,11 @@ void bind_bounds(py::module_& m) {
       .def_property_readonly("conservative", [](const PyBound& b) { return b.spec().info->conservative; })
       .def_property_readonly("options",
                              [](const PyBound& b) { return to_python(b.spec().options.to_json()); })
-      .def("__repr__", [](const PyBound& b) { return "<ccdlab.Bound " + b.name() + ">"; });
+      .def("__repr__", [](const PyBound& b) {
+        return "<ccdlab.Bound " + b.name() + ": " + std::string(ccd::to_string(b.spec().info->knowledge)) + ", " +
+               (b.spec().info->conservative ? "conservative" : "not conservative") + ", options " +
+               b.spec().options.to_json().dump() + ">";
+      });
 }
 
 }  // namespace ccdlab::python

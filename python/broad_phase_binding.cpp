@@ -99,7 +99,9 @@ void bind_broad_phases(py::module_& m) {
            "Box tests, rebuilt, and the method's own counters of the last call")
       .def_property_readonly("name", &PyBroadPhase::name)
       .def_property_readonly("options", &PyBroadPhase::options)
-      .def("__repr__", [](const PyBroadPhase& b) { return "<ccdlab.BroadPhase " + b.name() + ">"; });
+      .def("__repr__", [](const PyBroadPhase& b) {
+        return "<ccdlab.BroadPhase " + b.name() + ", options " + py::str(b.options()).cast<std::string>() + ">";
+      });
 }
 
 }  // namespace ccdlab::python

@@ -17,5 +17,6 @@ PYBIND11_MODULE(_ccdlab, m) {
   bind_run(m);
   bind_mesh_ccd(m);
   bind_queries(m);
+  bind_rigid_queries(m);
   bind_import(m);
 }

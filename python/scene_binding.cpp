@@ -6,6 +6,9 @@
 #include <ccd/scene/scene_io.hpp>
 #include <generators/registry.hpp>
 
+#include <ccd/util/parameters.hpp>
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace ccdlab::python {
@@ -90,6 +93,20 @@ py::array_t<double> positions(const PyScene& self, const py::object& times_objec
                       {static_cast<py::ssize_t>(times.size()), static_cast<py::ssize_t>(n), 3});
 }
 
+/// "<ccdlab.Scene 4 bodies (3 shaped), 2 scenery polygons, box (wrap), horizon 2 s, from rigid.json>".
+std::string scene_repr(const PyScene& self) {
+  const ccd::Scene& s = self.scene();
+  std::string out = "<ccdlab.Scene " + std::to_string(s.bodies.size()) + " bodies";
+  const auto shaped = std::count_if(s.rigid.begin(), s.rigid.end(),
+                                    [](const ccd::RigidBody& r) { return r.shape != ccd::kNoShape; });
+  if (shaped) out += " (" + std::to_string(shaped) + " shaped)";
+  if (!s.scenery.empty()) out += ", " + std::to_string(s.scenery.size()) + " scenery polygons";
+  if (s.box) out += s.wraps() ? ", box (wraps)" : ", box";
+  if (!s.gravity.isZero(0.0)) out += ", gravity";
+  out += ", horizon " + ccd::format_number(s.horizon) + " s, from " + self.source() + ">";
+  return out;
+}
+
 std::shared_ptr<PyScene> generate(const std::string& name, const py::kwargs& params) {
   const std::string source = "ccdlab.generate(" + name + ")";
   nlohmann::json j = from_python(params, source);
@@ -151,10 +168,7 @@ void bind_scene(py::module_& m) {
           py::arg("path"), "Writes the scene file atomically")
       .def("positions", &positions, py::arg("times"),
            "(len(times), n, 3) exact centre positions at the given times (walls solved)")
-      .def("__repr__", [](const PyScene& s) {
-        return "<ccdlab.Scene " + std::to_string(s.scene().bodies.size()) + " bodies, horizon " +
-               std::to_string(s.scene().horizon) + " s>";
-      });
+      .def("__repr__", &scene_repr);
 
   m.def(
       "load_scene",

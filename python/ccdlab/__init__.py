@@ -25,11 +25,13 @@ from .progress import with_progress as _with_progress  # noqa: E402
 from .results import Results, missed  # noqa: E402
 
 
-def run(*args, **kwargs):
-    return Results(_ccdlab.run(*args, **kwargs))
+def run(experiment, *, progress=None, **kwargs):
+    return Results(_with_progress(_ccdlab.run, progress, "ccdlab run", experiment, **kwargs))
 
 
-run.__doc__ = (_ccdlab.run.__doc__ or "") + "\n\nReturns a ccdlab.Results (a dict with helpers)."
+run.__doc__ = (_ccdlab.run.__doc__ or "") + (
+    "\n\nReturns a ccdlab.Results (a dict with helpers). progress=True draws a bar (tqdm's when "
+    "tqdm is installed, else a line on stderr).")
 
 
 def truth(scene, threads=0, progress=None):
@@ -38,3 +40,12 @@ def truth(scene, threads=0, progress=None):
 
 truth.__doc__ = (_ccdlab.truth.__doc__ or "") + (
     "\n\nprogress=True draws a bar (tqdm's when tqdm is installed, else a line on stderr).")
+
+
+def __getattr__(name):
+    # ccdlab.plot (charts as matplotlib Figures) is imported on first use: matplotlib is
+    # needed by it alone.
+    if name == "plot":
+        import importlib
+        return importlib.import_module(".plot", __name__)
+    raise AttributeError(f"module 'ccdlab' has no attribute {name!r}")

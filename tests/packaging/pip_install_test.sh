@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `pip install --no-build-isolation` of the Python package (pyproject.toml, setup.py) into a
 # fresh venv, offline, and `pip wheel`: the venv's ccdlab is the installed module and computes
-# a truth equal to the build tree's module. The build reuses this build folder
+# a truth equal to the build tree's module. Then `python3 -m build --no-isolation --wheel`
+# (Debian's python3-build): its wheel installs into another fresh venv and imports. The build reuses this build folder
 # (CCDLAB_BUILD_DIR: only the module target, up to date here) so the test takes seconds; a
 # user's `pip install` configures and builds its own (setup.py).
 # Usage: pip_install_test.sh SOURCE_DIR BUILD_DIR
@@ -41,4 +42,23 @@ theirs = subprocess.run([sys.executable, "-c",
 assert mine == json.loads(theirs), "the installed module's truth differs from the build tree's"
 assert len(truth.a) > 0
 print(f"pip install: {where} gives the build tree's truth ({len(truth.a)} events)")
+PY
+
+# `python3 -m build --no-isolation --wheel` (Debian's python3-build) makes a wheel that a
+# fresh venv installs offline and imports, with its compiled module.
+/usr/bin/python3 -m build --no-isolation --wheel --outdir "$work/built" "$work/project" >"$work/build.log" 2>&1 ||
+  { cat "$work/build.log"; exit 1; }
+wheel=$(ls "$work"/built/ccdlab-*-cp3*-linux_*.whl)
+/usr/bin/python3 -m venv --system-site-packages "$work/fresh"
+"$work/fresh/bin/pip" install -q --no-deps "$wheel"
+"$work/fresh/bin/python" - <<'PY'
+import pathlib
+import ccdlab
+where = pathlib.Path(ccdlab.__file__).resolve()
+assert "fresh" in where.parts and "site-packages" in where.parts, f"imported {where}, not the wheel's module"
+assert (where.parent / "plot.py").exists() and ccdlab.plot.CHARTS
+r = ccdlab.rigid_toi({"kind": "sphere", "radius": 0.5}, [0, 0, 0], [1, 0, 0],
+                     {"kind": "sphere", "radius": 0.5}, [3, 0, 0], [0, 0, 0], 4.0)
+assert abs(r["toi"] - 2.0) <= r["toi_error"], r
+print(f"python3 -m build: the wheel installs into a fresh venv and imports from {where.parent}")
 PY

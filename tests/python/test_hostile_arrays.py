@@ -334,6 +334,27 @@ def test_sphere_sphere_toi_arrays(value, which):
 
 
 @SETTINGS
+@given(value=hostile_arrays(st.one_of(ANY_SHAPE, st.just((3,)), st.just((4,)))),
+       which=st.sampled_from(["position_a", "velocity_b", "orientation_a", "angular_velocity_b", "acceleration_a",
+                              "shape_b.half_extents"]))
+def test_rigid_toi_arrays(value, which):
+    box = {"kind": "box", "half_extents": [0.5, 0.5, 0.5]}
+    args = {"shape_a": box, "position_a": [-2, 0, 0], "velocity_a": [1, 0, 0], "shape_b": dict(box),
+            "position_b": [2, 0, 0], "velocity_b": [-1, 0, 0], "duration": 4.0}
+    if which == "shape_b.half_extents":
+        args["shape_b"]["half_extents"] = value
+    else:
+        args[which] = value
+    result, error = call(ccdlab.rigid_toi, **args)
+    if error is not None:
+        refused(error, which)
+        return
+    plain = as_type(value, np.float64)
+    assert plain is not None and np.all(np.isfinite(plain)) and isinstance(result, dict)
+    assert plain.shape == ((4,) if which == "orientation_a" else (3,))
+
+
+@SETTINGS
 @given(dt=hostile_arrays(ANY_SHAPE), method=st.one_of(st.just("aabb/grid"), hostile_arrays(ANY_SHAPE)))
 def test_results_missed_arguments(dt, method):
     results = {"records": [{"method": "aabb/grid", "dt": 0.5, "missed": 0, "missed_events": []}]}
@@ -346,7 +367,8 @@ def test_results_missed_arguments(dt, method):
 
 
 TESTED = {"BroadPhase", "Bound", "Scene", "scene_from_json", "generate", "run", "truth", "mesh_ccd",
-          "scene_from_arrays", "import_frames", "vertex_face_ccd", "edge_edge_ccd", "sphere_sphere_toi", "missed"}
+          "scene_from_arrays", "import_frames", "vertex_face_ccd", "edge_edge_ccd", "sphere_sphere_toi", "missed",
+          "rigid_toi"}
 # Results takes a results document (a dict), not arrays; its methods are missed's (tested above).
 NO_ARRAYS = {"InputError", "Truth", "load_scene", "load_truth", "methods", "generators", "Results"}
 
