@@ -55,25 +55,25 @@ TEST_CASE("static stages: index pairs equal brute force, kinematic keeps first c
     for (std::uint32_t i = 0; i < motion.size(); ++i)
       for (std::uint32_t p = 0; p < scene.scenery.size(); ++p)
         if (plain.boxes()[i].overlaps(polygon_box(scene.scenery[p]))) brute.push_back({i, p});
-    REQUIRE(a.static_candidates == brute);
-    CHECK(b.static_candidates == brute);
-    CHECK(a.static_passed == b.static_passed);
-    for (const StaticPair& p : a.static_passed) CHECK(std::binary_search(brute.begin(), brute.end(), p));
+    REQUIRE(a.scenery.candidates == brute);
+    CHECK(b.scenery.candidates == brute);
+    CHECK(a.scenery.passed == b.scenery.passed);
+    for (const StaticPair& p : a.scenery.passed) CHECK(std::binary_search(brute.begin(), brute.end(), p));
     // First contact per body: the same with and without the kinematic principle.
     std::map<std::uint32_t, double> first_a, first_b;
-    for (const StaticContact& c : a.static_contacts) {
+    for (const StaticContact& c : a.scenery.contacts) {
       auto [it, fresh] = first_a.emplace(c.pair.body, c.contact.toi);
       if (!fresh) it->second = std::min(it->second, c.contact.toi);
     }
-    for (const StaticContact& c : b.static_contacts) {
+    for (const StaticContact& c : b.scenery.contacts) {
       auto [it, fresh] = first_b.emplace(c.pair.body, c.contact.toi);
       if (!fresh) it->second = std::min(it->second, c.contact.toi);
     }
     CHECK(first_a == first_b);
-    CHECK(a.static_tests_saved == 0);
-    CHECK(b.static_contacts.size() <= a.static_contacts.size());
-    saved += b.static_tests_saved;
-    contacts += a.static_contacts.size();
+    CHECK(a.scenery.tests_saved == 0);
+    CHECK(b.scenery.contacts.size() <= a.scenery.contacts.size());
+    saved += b.scenery.tests_saved;
+    contacts += a.scenery.contacts.size();
   }
   CHECK(contacts > 0);
   // Bounds whose static test carries timing (an earliest time later than the window's
