@@ -5,7 +5,6 @@
 
 #include <bounds/rounding.hpp>
 #include <bounds/speed_earliest.hpp>
-#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/queries/point_polygon.hpp>
 
 #include <algorithm>
@@ -97,7 +96,7 @@ void EarliestRun::decide_static(const Check& c) {
 ContactResult EarliestRun::narrow_static(std::uint32_t i, std::uint32_t polygon, double from, double until) {
   ++stats_.scenery.narrow_calls;
   const NarrowInput in{in_.motion, states_, {}, from, until, false};
-  return body_polygon_narrow(in, i, s_.scenery[polygon]);
+  return s_.table.find_polygon(in_.motion->kind(i))(in, i, s_.scenery[polygon]);
 }
 
 }  // namespace ccd::earliest

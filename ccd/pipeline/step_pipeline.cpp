@@ -1,4 +1,3 @@
-#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow_batch.hpp>
 #include <ccd/pipeline/step_pipeline.hpp>
@@ -153,8 +152,9 @@ void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, Ste
   watch.stop(local.bound);
 
   watch.start();
+  // The narrow table's polygon column, by the body's kind.
   auto solve = [&](std::uint32_t body, std::uint32_t polygon) {
-    return body_polygon_narrow(in, body, scenery_[polygon]);
+    return table_->find_polygon(in.motion->kind(body))(in, body, scenery_[polygon]);
   };
   if (!options_.kinematic) {
     for (const StaticPair& p : st.passed) {

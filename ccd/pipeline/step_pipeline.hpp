@@ -27,8 +27,9 @@
 // ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
 //  5. static_index.find_pairs(boxes) -> `scenery.candidates` (body, polygon), by body;
 //  6. bound.test_static for each -> `scenery.passed` with `scenery.earliest`;
-//  7. the narrow phase of a body against a polygon (ccd/narrow/body_polygon_narrow.hpp:
-//     exact for spheres, conservative advancement for other shapes) for each passed pair
+//  7. the narrow table's polygon column, the entry of the body's kind (the default table:
+//     exact for spheres, conservative advancement for other shapes,
+//     ccd/narrow/body_polygon_narrow.hpp) for each passed pair
 //     -> `scenery.contacts`. With PipelineOptions::kinematic the passed pairs of
 //     each body are visited by kinematic_visit (ccd/pipeline/kinematic_order.hpp): in order
 //     of `earliest`, skipping those that cannot be touched before the body's first certain
