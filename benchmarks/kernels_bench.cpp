@@ -175,9 +175,9 @@ void pipeline(benchmark::State& state, const char* bound_name, bool scalar_narro
   ctx.motion = &motion;
   ccd::StepResult step;
   for (auto _ : state) step_pipeline.run(ctx, step, nullptr, s.piece);
-  state.counters["candidates"] = static_cast<double>(step.candidates.size());
-  state.counters["passed"] = static_cast<double>(step.passed.size());
-  state.counters["confirmed"] = static_cast<double>(step.contacts.size());
+  state.counters["candidates"] = static_cast<double>(step.bodies.candidates.size());
+  state.counters["passed"] = static_cast<double>(step.bodies.passed.size());
+  state.counters["confirmed"] = static_cast<double>(step.bodies.contacts.size());
 }
 
 // The narrow phase alone on the pairs that pass the capsule bound in one step.
@@ -194,7 +194,7 @@ void narrow(benchmark::State& state, bool batched) {
     ctx.motion = &motion;
     ccd::StepResult step;
     step_pipeline.run(ctx, step, nullptr, s.piece);
-    return step.passed;
+    return step.bodies.passed;
   }();
   const ccd::NarrowInput in{&motion, s.start, s.piece, 0.0, ccdlab::bench::PeerScene::kDt, false};
   std::vector<ccd::ContactResult> out(passed.size());

@@ -111,7 +111,7 @@ void run(benchmark::State& state, const Fixture& (*scene)(), std::string method,
     const double cpu = ccd::thread_cpu_seconds() - cpu0;
     const ccd::ScheduleStats& st = result.stats;
     report(state, cpu, std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count(),
-           {double(st.pair_checks), double(st.narrow_calls), double(st.refreshes), double(result.contacts.size())});
+           {double(st.bodies.checks), double(st.bodies.narrow_calls), double(st.refreshes), double(result.contacts.size())});
   }
 }
 

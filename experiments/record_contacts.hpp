@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <string>
+#include <tuple>
 
 namespace ccdlab {
 
@@ -26,10 +28,13 @@ inline RecordContacts record_contacts(const nlohmann::json& r) {
   auto count = [&](const char* key) { return r.value(key, std::uint64_t{0}); };
   auto apart = [](std::uint64_t all, std::uint64_t a, std::uint64_t b) { return all >= a + b ? all - a - b : 0; };
   RecordContacts c;
-  c.body_to_detect = apart(count("events"), count("initial_contacts"), count("undecided"));
-  c.scenery_to_detect = apart(count("static_events"), count("static_initial_contacts"), count("static_undecided"));
-  c.body_missed = count("missed");
-  c.scenery_missed = count("static_missed");
+  // The body pairs' fields bare, the scenery's with "static_".
+  for (const auto& [prefix, to_detect, missed] :
+       {std::tuple{"", &c.body_to_detect, &c.body_missed}, std::tuple{"static_", &c.scenery_to_detect, &c.scenery_missed}}) {
+    auto field = [&](const char* name) { return count((std::string(prefix) + name).c_str()); };
+    *to_detect = apart(field("events"), field("initial_contacts"), field("undecided"));
+    *missed = field("missed");
+  }
   return c;
 }
 

@@ -5,6 +5,7 @@
 #include <ccd/util/thread_cpu_time.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -20,35 +21,35 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// One kind of pair in one run: the stages' counts, the contacts confirmed and per truth
+// event its lag (NaN = not detected).
+struct PairTally {
+  ccd::PairCounts stages;
+  std::uint64_t confirmed = 0;
+  std::vector<double> lag;
+  bool operator==(const PairTally& o) const {
+    if (!(stages == o.stages) || confirmed != o.confirmed || lag.size() != o.lag.size()) return false;
+    for (std::size_t i = 0; i < lag.size(); ++i)
+      if (std::isnan(lag[i]) != std::isnan(o.lag[i])) return false;
+    return true;
+  }
+};
+
 struct Counts {
-  std::uint64_t candidates = 0, bound_candidates = 0, confirmed = 0, false_positives = 0;
+  PairTally bodies, scenery;
+  std::uint64_t false_positives = 0;
   std::map<std::string, std::uint64_t, std::less<>> counters;  // the broad phase's own, summed over steps
   std::uint64_t rebuilds = 0;  // steps at which the broad phase built its structure from scratch
   std::uint64_t unexpected = 0;
-  std::uint64_t pair_checks = 0, narrow_calls = 0, refreshes = 0, steps = 0;  // scheduled methods
+  std::uint64_t refreshes = 0, steps = 0;  // scheduled methods
   double bound_s = 0, broad_s = 0, narrow_s = 0, total_s = 0;
   double cpu_s = 0;  // the calling thread's CPU time over the same span as total_s
   double first_broad_s = 0;  // the broad phase at the first step (sap: the initial sort)
-  std::vector<double> lag, penetration;  // per event; NaN = not detected
-  // Scenery: the static stages' pairs, summed over steps, and per static event its lag.
-  std::uint64_t static_candidates = 0, static_bound_candidates = 0, static_confirmed = 0, static_tests_saved = 0;
-  std::uint64_t static_pair_checks = 0, static_narrow_calls = 0;  // scheduled methods
-  std::vector<double> static_lag;
+  std::vector<double> penetration;  // per body-body event; NaN = not detected
   bool operator==(const Counts& o) const {
-    auto same = [](const std::vector<double>& x, const std::vector<double>& y) {
-      if (x.size() != y.size()) return false;
-      for (std::size_t i = 0; i < x.size(); ++i)
-        if (std::isnan(x[i]) != std::isnan(y[i])) return false;
-      return true;
-    };
-    return candidates == o.candidates && bound_candidates == o.bound_candidates && confirmed == o.confirmed &&
-           false_positives == o.false_positives && unexpected == o.unexpected && counters == o.counters &&
-           rebuilds == o.rebuilds && pair_checks == o.pair_checks && narrow_calls == o.narrow_calls &&
-           refreshes == o.refreshes && steps == o.steps && same(lag, o.lag) &&
-           static_candidates == o.static_candidates && static_bound_candidates == o.static_bound_candidates &&
-           static_confirmed == o.static_confirmed && static_tests_saved == o.static_tests_saved &&
-           static_pair_checks == o.static_pair_checks && static_narrow_calls == o.static_narrow_calls &&
-           same(static_lag, o.static_lag);
+    return bodies == o.bodies && scenery == o.scenery && false_positives == o.false_positives &&
+           unexpected == o.unexpected && counters == o.counters && rebuilds == o.rebuilds &&
+           refreshes == o.refreshes && steps == o.steps;
   }
 };
 
@@ -70,7 +71,7 @@ void match_contact(const RunInput& in, bool continuous, ccd::BodyPair p, const c
     // Continuous: detected when confirmed in a step that contains its enter time.
     // Discrete: detected at the first sample inside the event.
     if (continuous && ev.enter < t0 - slack) continue;
-    if (std::isnan(c.lag[e])) {
+    if (std::isnan(c.bodies.lag[e])) {
       // A continuous method confirms the pair from its first contact in the step on;
       // an event that starts later in the same step (the pair was already touching
       // at the step's start from an earlier event) is detected at its own start, where
@@ -83,7 +84,7 @@ void match_contact(const RunInput& in, bool continuous, ccd::BodyPair p, const c
       const double signed_distance = at == when || !spheres
                                          ? contact.signed_distance
                                          : ccd::sphere_signed_distance(in.motion->centres(), p.a, p.b, at);
-      c.lag[e] = std::max(0.0, at - ev.enter);
+      c.bodies.lag[e] = std::max(0.0, at - ev.enter);
       c.penetration[e] = std::max(0.0, -signed_distance);
     }
   }
@@ -112,9 +113,9 @@ void match_static_contact(const RunInput& in, const StaticEventIndex& index, boo
       if (ev.exit < t0 - slack || ev.enter > t1 + slack) continue;
       matched = true;
       if (continuous && ev.enter < t0 - slack) continue;
-      if (std::isnan(c.static_lag[e])) {
+      if (std::isnan(c.scenery.lag[e])) {
         const double at = continuous ? std::max(sc.contact.toi, ev.enter) : sc.contact.toi;
-        c.static_lag[e] = std::max(0.0, at - ev.enter);
+        c.scenery.lag[e] = std::max(0.0, at - ev.enter);
       }
     }
   }
@@ -128,8 +129,8 @@ class ContactMatcher final : public ccd::ContactSink {
       : in_(in), continuous_(continuous), c_(c), static_index_(index_static_events(in.static_events)) {}
   void found(std::span<const ccd::ScheduledContact> contacts,
              std::span<const ccd::ScheduledStaticContact> static_contacts) override {
-    c_.confirmed += contacts.size();
-    c_.static_confirmed += static_contacts.size();
+    c_.bodies.confirmed += contacts.size();
+    c_.scenery.confirmed += static_contacts.size();
     for (const ccd::ScheduledContact& sc : contacts)
       match_contact(in_, continuous_, sc.pair, sc.contact, sc.from, sc.to, c_);
     for (const ccd::ScheduledStaticContact& sc : static_contacts)
@@ -149,9 +150,9 @@ class ContactMatcher final : public ccd::ContactSink {
 Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& cancelled) {
   Counts c;
   const std::size_t n_events = in.truth->events().size();
-  c.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
+  c.bodies.lag.assign(n_events, std::numeric_limits<double>::quiet_NaN());
   c.penetration.assign(n_events, std::numeric_limits<double>::quiet_NaN());
-  c.static_lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
+  c.scenery.lag.assign(in.static_events.size(), std::numeric_limits<double>::quiet_NaN());
   const std::unique_ptr<ccd::Scheduler> scheduler = method.scheduler.make({&method.bound, &method.broad_phase, dt});
   scheduler->set_scenery(in.scene->scenery);
   ContactMatcher matcher(in, method.continuous(), c);
@@ -173,20 +174,13 @@ Counts run_once(const RunInput& in, const MethodSpec& method, double dt, bool& c
   c.narrow_s = result.times.narrow;
   c.first_broad_s = result.first_broad_seconds;
   const ccd::ScheduleStats& st = result.stats;
-  c.candidates = st.candidates;
-  c.bound_candidates = st.passed;
-  c.false_positives = st.narrow_calls - c.confirmed;
+  c.bodies.stages = st.bodies;
+  c.scenery.stages = st.scenery;
+  c.false_positives = st.bodies.narrow_calls - c.bodies.confirmed;
   c.counters = st.counters;
   c.rebuilds = st.rebuilds;
-  c.pair_checks = st.pair_checks;
-  c.narrow_calls = st.narrow_calls;
   c.refreshes = st.refreshes;
   c.steps = st.batches;
-  c.static_candidates = st.static_candidates;
-  c.static_bound_candidates = st.static_passed;
-  c.static_tests_saved = st.static_tests_saved;
-  c.static_pair_checks = st.static_checks;
-  c.static_narrow_calls = st.static_narrow_calls;
   return c;
 }
 
@@ -243,33 +237,37 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
 
   const double T = in.scene->horizon;
   r.steps = c.steps;  // fixed: the steps or samples; scheduled: the refresh events
-  r.pair_checks = c.pair_checks;
-  r.narrow_calls = c.narrow_calls;
   r.refreshes = c.refreshes;
+  for (auto [rec, tally] : {std::pair{&r.bodies, &c.bodies}, std::pair{&r.scenery, &c.scenery}}) {
+    static_cast<ccd::PairCounts&>(*rec) = tally->stages;
+    rec->confirmed = tally->confirmed;
+  }
 
   const auto& events = in.truth->events();
-  r.events = events.size();
+  PairRecord& bodies = r.bodies;
+  bodies.events = events.size();
   double lag_sum = 0.0, pen_sum = 0.0;
   // A certified (rigid) truth widens it by its largest error.
   const double slack = std::max(1e-9 * T, in.truth_error);
   for (std::size_t e = 0; e < events.size(); ++e) {
     if (!in.errors.empty() && in.errors[e].undecided) {
       // The truth could not decide it: counted apart, never a miss.
-      ++r.undecided;
+      ++bodies.undecided;
       continue;
     }
     if (events[e].enter == 0.0) {
       // In progress at t = 0: counted apart, outside misses, lag and penetration.
-      ++r.initial_contacts;
+      ++bodies.initial_contacts;
       continue;
     }
-    if (std::isnan(c.lag[e]) && in.list_missed)
-      r.missed_events.push_back({events[e].a, events[e].b, events[e].enter, events[e].exit});
-    if (!std::isnan(c.lag[e])) {
-      ++r.detected;
-      lag_sum += c.lag[e];
+    const double lag = c.bodies.lag[e];
+    if (std::isnan(lag) && in.list_missed)
+      bodies.missed_events.push_back({events[e].a, events[e].b, events[e].enter, events[e].exit});
+    if (!std::isnan(lag)) {
+      ++bodies.detected;
+      lag_sum += lag;
       pen_sum += c.penetration[e];
-      r.max_lag = std::max(r.max_lag, c.lag[e]);
+      r.max_lag = std::max(r.max_lag, lag);
       r.max_penetration = std::max(r.max_penetration, c.penetration[e]);
     } else if (!r.continuous) {
       // A discrete method must detect every event that contains a sample time well
@@ -278,36 +276,27 @@ RunRecord run_method(const RunInput& in, const MethodSpec& method, double dt) {
       if (first * dt < events[e].exit - slack && first * dt <= T) ++r.self_check_undetected;
     }
   }
-  r.missed = r.events - r.initial_contacts - r.detected - r.undecided;
-  r.static_events = in.static_events.size();
+  PairRecord& scenery = r.scenery;
+  scenery.events = in.static_events.size();
   for (std::size_t e = 0; e < in.static_events.size(); ++e) {
     if (!in.static_errors.empty() && in.static_errors[e].undecided)
-      ++r.static_undecided;
+      ++scenery.undecided;
     else if (in.static_events[e].enter == 0.0)
-      ++r.static_initial_contacts;
-    else if (!std::isnan(c.static_lag[e]))
-      ++r.static_detected;
+      ++scenery.initial_contacts;
+    else if (!std::isnan(c.scenery.lag[e]))
+      ++scenery.detected;
     else if (in.list_missed)
-      r.static_missed_events.push_back({in.static_events[e].body, in.static_events[e].polygon,
-                                        in.static_events[e].enter, in.static_events[e].exit});
+      scenery.missed_events.push_back({in.static_events[e].body, in.static_events[e].polygon,
+                                       in.static_events[e].enter, in.static_events[e].exit});
   }
-  r.static_missed = r.static_events - r.static_initial_contacts - r.static_detected - r.static_undecided;
-  std::sort(r.missed_events.begin(), r.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
+  for (PairRecord* p : {&bodies, &scenery}) p->missed = p->events - p->initial_contacts - p->detected - p->undecided;
+  std::sort(bodies.missed_events.begin(), bodies.missed_events.end(), [](const MissedEvent& x, const MissedEvent& y) {
     return x.enter != y.enter ? x.enter < y.enter : x.a != y.a ? x.a < y.a : x.b < y.b;
   });
-  if (r.detected > 0) {
-    r.mean_lag = lag_sum / double(r.detected);
-    r.mean_penetration = pen_sum / double(r.detected);
+  if (bodies.detected > 0) {
+    r.mean_lag = lag_sum / double(bodies.detected);
+    r.mean_penetration = pen_sum / double(bodies.detected);
   }
-  r.static_candidates = c.static_candidates;
-  r.static_bound_candidates = c.static_bound_candidates;
-  r.static_confirmed = c.static_confirmed;
-  r.static_tests_saved = c.static_tests_saved;
-  r.static_pair_checks = c.static_pair_checks;
-  r.static_narrow_calls = c.static_narrow_calls;
-  r.candidates = c.candidates;
-  r.bound_candidates = c.bound_candidates;
-  r.confirmed = c.confirmed;
   r.false_positives = c.false_positives;
   r.counters.assign(c.counters.begin(), c.counters.end());
   r.self_check_unexpected = c.unexpected;
@@ -340,9 +329,23 @@ nlohmann::json counters_json(const std::vector<std::pair<std::string, std::uint6
   return j;
 }
 
+// One kind of pair as the results file names it.
+struct PairTwin {
+  const char* prefix;     // of every field
+  const char* a;          // a missed event's two indices
+  const char* b;
+  bool kinematic;         // writes tests_saved (the kinematic principle orders the static pairs only)
+  const PairRecord& record;
+};
+
+std::array<PairTwin, 2> pair_twins(const RunRecord& r) {
+  return {PairTwin{"", "a", "b", false, r.bodies}, PairTwin{"static_", "body", "polygon", true, r.scenery}};
+}
+
 }  // namespace
 
 nlohmann::json to_json(const RunRecord& r, bool list_missed) {
+  const PairRecord& bodies = r.bodies;
   nlohmann::json j = {{"method", r.method},
           {"bound", r.bound},
           {"broad_phase", r.broad_phase},
@@ -353,17 +356,10 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"dt", r.dt},
           {"hz", r.hz},
           {"steps", r.steps},
-          {"events", r.events},
-          {"initial_contacts", r.initial_contacts},
-          {"detected", r.detected},
-          {"missed", r.missed},
-          {"missed_fraction", r.events > r.initial_contacts + r.undecided
-                                  ? double(r.missed) / double(r.events - r.initial_contacts - r.undecided)
+          {"missed_fraction", bodies.events > bodies.initial_contacts + bodies.undecided
+                                  ? double(bodies.missed) /
+                                        double(bodies.events - bodies.initial_contacts - bodies.undecided)
                                   : 0.0},
-          {"undecided", r.undecided},
-          {"candidates", r.candidates},
-          {"bound_candidates", r.bound_candidates},
-          {"confirmed", r.confirmed},
           {"false_positives", r.false_positives},
           {"false_positives_per_step", r.steps ? double(r.false_positives) / double(r.steps) : 0.0},
           {"max_penetration", r.max_penetration},
@@ -380,36 +376,36 @@ nlohmann::json to_json(const RunRecord& r, bool list_missed) {
           {"first_broad_seconds", r.first_broad_seconds},
           {"counters", counters_json(r.counters)},
           {"rebuilds", r.rebuilds},
-          {"static_events", r.static_events},
-          {"static_initial_contacts", r.static_initial_contacts},
-          {"static_detected", r.static_detected},
-          {"static_missed", r.static_missed},
-          {"static_undecided", r.static_undecided},
-          {"static_candidates", r.static_candidates},
-          {"static_bound_candidates", r.static_bound_candidates},
-          {"static_confirmed", r.static_confirmed},
-          {"static_tests_saved", r.static_tests_saved},
           {"self_check",
            {{"ok", r.self_check_unexpected == 0 && r.self_check_undetected == 0 && r.counts_stable},
             {"unexpected_contacts", r.self_check_unexpected},
             {"undetected_sampled_events", r.self_check_undetected},
             {"counts_stable", r.counts_stable}}}};
-  if (r.scheduled) {
-    j["pair_checks"] = r.pair_checks;
-    j["narrow_calls"] = r.narrow_calls;
-    j["refreshes"] = r.refreshes;
-    j["static_pair_checks"] = r.static_pair_checks;
-    j["static_narrow_calls"] = r.static_narrow_calls;
-  }
-  if (list_missed) {
-    nlohmann::json missed = nlohmann::json::array();
-    for (const MissedEvent& m : r.missed_events)
-      missed.push_back({{"a", m.a}, {"b", m.b}, {"enter", m.enter}, {"exit", m.exit}});
-    j["missed_events"] = std::move(missed);
-    nlohmann::json missed_static = nlohmann::json::array();
-    for (const MissedEvent& m : r.static_missed_events)
-      missed_static.push_back({{"body", m.a}, {"polygon", m.b}, {"enter", m.enter}, {"exit", m.exit}});
-    j["static_missed_events"] = std::move(missed_static);
+  if (r.scheduled) j["refreshes"] = r.refreshes;
+  // The two kinds of pairs, by the same names: the body pairs' bare, the scenery's with
+  // "static_" (a missed scenery event names its body and polygon).
+  for (const PairTwin& twin : pair_twins(r)) {
+    const PairRecord& p = twin.record;
+    auto key = [&](const char* name) { return std::string(twin.prefix) + name; };
+    j[key("events")] = p.events;
+    j[key("initial_contacts")] = p.initial_contacts;
+    j[key("detected")] = p.detected;
+    j[key("missed")] = p.missed;
+    j[key("undecided")] = p.undecided;
+    j[key("candidates")] = p.candidates;
+    j[key("bound_candidates")] = p.passed;
+    j[key("confirmed")] = p.confirmed;
+    if (twin.kinematic) j[key("tests_saved")] = p.tests_saved;
+    if (r.scheduled) {
+      j[key("pair_checks")] = p.checks;
+      j[key("narrow_calls")] = p.narrow_calls;
+    }
+    if (list_missed) {
+      nlohmann::json missed = nlohmann::json::array();
+      for (const MissedEvent& m : p.missed_events)
+        missed.push_back({{twin.a, m.a}, {twin.b, m.b}, {"enter", m.enter}, {"exit", m.exit}});
+      j[key("missed_events")] = std::move(missed);
+    }
   }
   return j;
 }

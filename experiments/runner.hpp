@@ -21,6 +21,7 @@
 
 #include <ccd/motion/trajectory.hpp>
 #include <pipeline/fixed_step_scheduler.hpp>
+#include <pipeline/pair_counts.hpp>
 #include <ccd/scene/scene.hpp>
 #include <ccd/truth/static_truth.hpp>
 #include <ccd/truth/truth_io.hpp>
@@ -47,19 +48,38 @@ struct RunInput {
   /// window in which a detection is matched to an event; 0 for an exact truth.
   double truth_error = 0.0;
   /// One entry per truth event (static event), or empty when every one is exact: events
-  /// flagged `undecided` are counted apart (RunRecord::undecided), never detected or missed.
+  /// flagged `undecided` are counted apart (PairRecord::undecided), never detected or missed.
   std::span<const ccd::EventError> errors;
   std::span<const ccd::EventError> static_errors;
   double acceleration_bound = 0.0;          ///< A given to Bounded bounds
   int repeats = 1;                          ///< timing repeats; times are medians
   const std::atomic<bool>* cancel = nullptr;  ///< checked once per step
-  bool list_missed = false;                 ///< fill RunRecord::missed_events
+  bool list_missed = false;                 ///< fill PairRecord::missed_events
 };
 
-/// A ground-truth event the method missed (RunRecord::missed_events).
+/// A ground-truth event the method missed (PairRecord::missed_events).
 struct MissedEvent {
   std::uint32_t a = 0, b = 0;
   double enter = 0.0, exit = 0.0;
+};
+
+/// One kind of pair in a run (RunRecord::bodies, RunRecord::scenery): the stages' counts
+/// summed over steps (ccd::PairCounts: candidates, checks = the bound's pair tests, passed =
+/// the bound candidates, narrow calls, tests saved by the kinematic principle) and the
+/// truth's events counted against the contacts found.
+struct PairRecord : ccd::PairCounts {
+  std::uint64_t events = 0;            ///< ground-truth events, all of them
+  std::uint64_t initial_contacts = 0;  ///< of those, events in progress at t = 0 (enter == 0)
+  std::uint64_t detected = 0;          ///< of the other events, those detected
+  std::uint64_t missed = 0;            ///< of the other events, those missed
+  /// Of the events, those the truth could not decide (ccd::EventError::undecided): counted
+  /// apart, neither detected nor missed, and outside initial_contacts.
+  std::uint64_t undecided = 0;
+  std::uint64_t confirmed = 0;  ///< of the bound candidates, pairs the exact narrow phase confirmed
+  /// With RunInput::list_missed: the events missed. Body pairs: sorted by enter (then a, b);
+  /// scenery: a = body, b = polygon (an index into Scene::scenery), in the truth's order
+  /// (enter, body, polygon).
+  std::vector<MissedEvent> missed_events;
 };
 
 struct RunRecord {
@@ -76,16 +96,14 @@ struct RunRecord {
   double dt = 0.0;
   double hz = 0.0;             ///< 1 / dt, or the frequency as the experiment gave it
   std::uint64_t steps = 0;     ///< samples (discrete) or steps (continuous)
-  std::uint64_t events = 0;    ///< ground-truth events, all of them
-  std::uint64_t initial_contacts = 0;  ///< of those, events in progress at t = 0 (enter == 0)
-  std::uint64_t detected = 0;  ///< of the other events, those detected
-  std::uint64_t missed = 0;    ///< of the other events, those missed
-  /// Of the events, those the truth could not decide (ccd::EventError::undecided): counted
-  /// apart, neither detected nor missed, and outside initial_contacts.
-  std::uint64_t undecided = 0;
-  std::uint64_t candidates = 0;        ///< pairs reported by the broad phase, summed over steps
-  std::uint64_t bound_candidates = 0;  ///< of those, pairs passing the bound's own test
-  std::uint64_t confirmed = 0;         ///< of those, pairs the exact narrow phase confirmed
+  /// The body pairs: the truth's body-body events; the broad phase's pairs summed over
+  /// steps, those passing the bound's own test, those the exact narrow phase confirmed.
+  PairRecord bodies;
+  /// The body-polygon pairs (0 for a scene without scenery): the truth's body-static events,
+  /// counted like the body-body ones (in progress at t = 0 apart; detected by the same rule),
+  /// the static stages' pairs summed over steps (scheduled methods: over the bodies' windows
+  /// and the static refinements), and the static pairs the kinematic principle skipped.
+  PairRecord scenery;
   std::uint64_t false_positives = 0;   ///< bound candidates with no contact at the sample/in the step
   double max_penetration = 0.0;        ///< largest -signed distance (narrow phase) at first detection
   double mean_penetration = 0.0;
@@ -107,37 +125,14 @@ struct RunRecord {
   std::vector<std::pair<std::string, std::uint64_t>> counters;
   std::uint64_t rebuilds = 0;          ///< steps at which the broad phase built its structure from scratch
                                        ///< (every step for brute, grid, hgrid, rtree)
-  /// Scheduled methods only (written when `scheduled`): bound pair tests, narrow-phase
-  /// calls and body bounds built (the first of each body included). `steps` is then the
+  /// Scheduled methods (their pairs' checks and narrow calls, and these, are written only
+  /// for them): body bounds built (the first of each body included). `steps` is then the
   /// number of refresh events, `false_positives` the narrow calls that found nothing.
   bool scheduled = false;
-  std::uint64_t pair_checks = 0;
-  std::uint64_t narrow_calls = 0;
   std::uint64_t refreshes = 0;
   std::uint64_t self_check_unexpected = 0;  ///< confirmed contacts that truth does not have
   std::uint64_t self_check_undetected = 0;  ///< discrete: events containing a sample but not detected
-  /// Scenery (0 for a scene without it): body-static events of the truth, counted like the
-  /// body-body ones (in progress at t = 0 apart; detected by the same rule), the static
-  /// stages' pairs summed over steps (scheduled methods: over the bodies' windows and the
-  /// static refinements), and the static pairs the kinematic principle skipped.
-  std::uint64_t static_events = 0;
-  std::uint64_t static_initial_contacts = 0;
-  std::uint64_t static_detected = 0;
-  std::uint64_t static_missed = 0;
-  std::uint64_t static_undecided = 0;
-  std::uint64_t static_candidates = 0;
-  std::uint64_t static_bound_candidates = 0;
-  std::uint64_t static_confirmed = 0;
-  std::uint64_t static_tests_saved = 0;
-  /// Scheduled methods only (written when `scheduled`): the bound's static tests (and speed
-  /// re-checks) and the body-polygon narrow-phase calls.
-  std::uint64_t static_pair_checks = 0;
-  std::uint64_t static_narrow_calls = 0;
   bool counts_stable = true;           ///< identical counts over all repeats
-  std::vector<MissedEvent> missed_events;  ///< with RunInput::list_missed: sorted by enter (then a, b)
-  /// With RunInput::list_missed: the body-scenery events missed, a = body, b = polygon (an
-  /// index into Scene::scenery), in the truth's order (enter, body, polygon).
-  std::vector<MissedEvent> static_missed_events;
   bool cancelled = false;
 };
 

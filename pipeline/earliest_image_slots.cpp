@@ -95,7 +95,7 @@ void EarliestRun::refresh_wrapped(double t, bool first) {
   watch_.stop(local_.broad);
   watch_.start();
   image_pairs_of();
-  stats_.candidates += image_pairs_.size();
+  stats_.bodies.candidates += image_pairs_.size();
   test_pairs(t);
   watch_.stop(local_.bound);
 }

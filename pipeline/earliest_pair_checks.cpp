@@ -17,10 +17,10 @@ void EarliestRun::test_pairs(double now) {
   // One pair: x and y are the slots checked (bodies, or images when the scene wraps around),
   // a and b the bodies whose versions date the check.
   const auto test = [&](std::uint32_t x, std::uint32_t y, std::uint32_t a, std::uint32_t b) {
-    ++stats_.pair_checks;
+    ++stats_.bodies.checks;
     const PairTest r = s_.bound.test(std::min(x, y), std::max(x, y));
     if (!r.possible()) return;
-    ++stats_.passed;
+    ++stats_.bodies.passed;
     const Window w = common_window(s_.bound.window(x), s_.bound.window(y));
     const double t = std::max(r.earliest, now);
     if (inline_checks_) pending_.push_back({t, x, y, w.t0, w.t1});
@@ -42,10 +42,10 @@ void EarliestRun::recheck_pair(const Check& c) {
   const SpeedBall ba{states_[c.a].position, c.t, speed_bound(c.a, c.t, to), states_[c.a].radius};
   const SpeedBall bb{states_[c.b].position, c.t, speed_bound(c.b, c.t, to), states_[c.b].radius};
   const double from = std::max(c.t, speed_earliest(ba, bb));
-  ++stats_.pair_checks;
+  ++stats_.bodies.checks;
   ++stats_.rechecks;
   if (from > to) return;  // no contact possible in the rest of the common window
-  ++stats_.passed;
+  ++stats_.bodies.passed;
   // The chunk: the time in which the pair's distance may change by `chunk` x the sum of
   // their radii (at least the rest of the window when neither may move).
   const double closing = ba.speed + bb.speed;
@@ -92,9 +92,9 @@ void EarliestRun::refine_pair(const Check& c) {
     if (scratch_boxes_[c.a].overlaps(scratch_boxes_[c.b])) r = s_.scratch.test(c.a, c.b);
   }
   stats_.refreshes += 2;
-  ++stats_.pair_checks;
+  ++stats_.bodies.checks;
   if (r.possible()) {
-    ++stats_.passed;
+    ++stats_.bodies.passed;
     next_.push_back({std::max(r.earliest, c.t), c.a, c.b, c.t, to});
   }
 }
@@ -134,7 +134,7 @@ void EarliestRun::narrow_job(const Job& j) {
     else if (j.until < j.to) next_.push_back({j.until, j.a, j.b, j.from, j.to});
     return;
   }
-  ++stats_.narrow_calls;
+  ++stats_.bodies.narrow_calls;
   const ContactResult c = narrow_pair(j.a, j.b, j.from, j.until);
   if (c.found()) contacts_.push_back({{owner(j.a), owner(j.b)}, c, j.from, j.to});
   else if (j.until < j.to) next_.push_back({j.until, j.a, j.b, j.from, j.to});  // a re-check (reads no `since`)

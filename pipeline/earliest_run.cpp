@@ -105,7 +105,7 @@ void EarliestRun::first_windows() {
   watch_.start();
   s_.broad.find_pairs(boxes_, pairs_);
   watch_.stop(local_.broad);
-  stats_.candidates += pairs_.size();
+  stats_.bodies.candidates += pairs_.size();
   watch_.start();
   test_pairs(0.0);
   watch_.stop(local_.bound);
@@ -148,7 +148,7 @@ void EarliestRun::queued_check(const Event& e) {
     return;
   }
   const double to = std::min(wa.t1, wb.t1);
-  ++stats_.narrow_calls;
+  ++stats_.bodies.narrow_calls;
   watch_.start();
   const ContactResult c = narrow_pair(e.a, e.b, e.t, to);
   watch_.stop(local_.narrow);

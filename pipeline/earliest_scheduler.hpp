@@ -72,8 +72,8 @@
 // the check time to its window's end in the scratch instance, then test_static again),
 // speed re-check with `recheck` (the body's speed bound and its distance to the polygon,
 // a chunk being the time in which that distance may change by chunk x r), or narrow phase
-// (ccd/narrow/body_polygon_narrow.hpp: exact for spheres, conservative advancement for
-// other shapes) from the check time to the window's end. With `refresh_bodies` (queued
+// (the narrow table's polygon column by the body's kind, ccd/narrow/narrow_table.hpp: exact
+// for spheres, conservative advancement for other shapes) from the check time to the window's end. With `refresh_bodies` (queued
 // checks) a stale static check refreshes its body. Coverage: each body's time is tiled by
 // its windows, each window's polygons are examined when its bound is built, as above.
 // A scene that wraps around takes no scenery (std::invalid_argument).

@@ -5,7 +5,6 @@
 
 #include <bounds/rounding.hpp>
 #include <bounds/speed_earliest.hpp>
-#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/queries/point_polygon.hpp>
 
 #include <algorithm>
@@ -27,14 +26,14 @@ void EarliestRun::test_static_pairs(double now, std::span<const std::uint32_t> b
     for (const std::uint32_t p : polygons_) static_pairs_.push_back({i, p});
   }
   watch_.stop(local_.broad);
-  stats_.static_candidates += static_pairs_.size();
+  stats_.scenery.candidates += static_pairs_.size();
   watch_.start();
   for (const StaticPair& q : static_pairs_) {
     const std::uint32_t i = q.body, p = q.polygon;
-    ++stats_.static_checks;
+    ++stats_.scenery.checks;
     const PairTest r = s_.bound.test_static(i, boxes_[i], s_.scenery[p], s_.static_index.box(p));
     if (!r.possible()) continue;
-    ++stats_.static_passed;
+    ++stats_.scenery.passed;
     const Window w = s_.bound.window(i);
     const double t = std::max(r.earliest, now);
     if (inline_checks_) pending_.push_back({t, i, static_b(p), w.t0, w.t1});
@@ -58,9 +57,9 @@ void EarliestRun::decide_static(const Check& c) {
     const SpeedBall ball{x, c.t, speed_bound(i, c.t, to), states_[i].radius};
     const double d = std::sqrt(point_polygon_closest(x, polygon).distance_squared);
     const double from = std::max(c.t, speed_earliest_static(ball, d, static_rounding_slack(x, polygon)));
-    ++stats_.static_checks;
+    ++stats_.scenery.checks;
     if (from > to) return;
-    ++stats_.static_passed;
+    ++stats_.scenery.passed;
     // The chunk: the time in which the distance may change by `chunk` x the radius.
     const double h = s_.options.chunk > 0.0 && ball.speed > 0.0 ? s_.options.chunk * ball.radius / ball.speed
                                                                 : std::numeric_limits<double>::infinity();
@@ -82,9 +81,9 @@ void EarliestRun::decide_static(const Check& c) {
     s_.scratch.refresh(ctx_, std::span<const std::uint32_t>(pair_bodies_, 1), scratch_boxes_);
     const PairTest r = s_.scratch.test_static(i, scratch_boxes_[i], polygon, s_.static_index.box(p));
     ++stats_.refreshes;
-    ++stats_.static_checks;
+    ++stats_.scenery.checks;
     if (r.possible()) {
-      ++stats_.static_passed;
+      ++stats_.scenery.passed;
       next_.push_back({std::max(r.earliest, c.t), i, c.b, c.t, to});
     }
     return;
@@ -95,9 +94,9 @@ void EarliestRun::decide_static(const Check& c) {
 // A body's narrow phase against a polygon over [from, until] (exact for a sphere,
 // conservative advancement for another shape).
 ContactResult EarliestRun::narrow_static(std::uint32_t i, std::uint32_t polygon, double from, double until) {
-  ++stats_.static_narrow_calls;
+  ++stats_.scenery.narrow_calls;
   const NarrowInput in{in_.motion, states_, {}, from, until, false};
-  return body_polygon_narrow(in, i, s_.scenery[polygon]);
+  return s_.table.find_polygon(in_.motion->kind(i))(in, i, s_.scenery[polygon]);
 }
 
 }  // namespace ccd::earliest

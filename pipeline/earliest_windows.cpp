@@ -60,7 +60,7 @@ void EarliestRun::refresh(double t) {
   watch_.start();
   s_.broad.update(boxes_, batch_, pairs_);
   watch_.stop(local_.broad);
-  stats_.candidates += pairs_.size();
+  stats_.bodies.candidates += pairs_.size();
   watch_.start();
   test_pairs(t);
   watch_.stop(local_.bound);

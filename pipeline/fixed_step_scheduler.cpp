@@ -8,6 +8,20 @@
 #include <stdexcept>
 
 namespace ccd {
+namespace {
+
+// One step's stage into the run's counts: every candidate is one check, every passed pair
+// one narrow call unless the kinematic principle skipped it.
+template <class Pair, class Contact>
+void add_step(PairCounts& counts, const PairStage<Pair, Contact>& step) {
+  counts.candidates += step.candidates.size();
+  counts.checks += step.candidates.size();
+  counts.passed += step.passed.size();
+  counts.narrow_calls += step.passed.size() - step.tests_saved;
+  counts.tests_saved += step.tests_saved;
+}
+
+}  // namespace
 
 std::uint64_t sample_count(double horizon, double dt) {
   if (!(dt > 0.0) || !std::isfinite(dt) || !(horizon >= 0.0)) return 0;
@@ -75,15 +89,8 @@ bool FixedStepScheduler::run(const ScheduleInput& in, ScheduleResult& out) {
     ++st.batches;
     st.refreshes += motion.size();
     if (step_.broad_stats.rebuilt) ++st.rebuilds;
-    st.candidates += step_.candidates.size();
-    st.pair_checks += step_.candidates.size();
-    st.passed += step_.passed.size();
-    st.narrow_calls += step_.passed.size();
-    st.static_candidates += step_.static_candidates.size();
-    st.static_checks += step_.static_candidates.size();
-    st.static_passed += step_.static_passed.size();
-    st.static_narrow_calls += step_.static_passed.size() - step_.static_tests_saved;
-    st.static_tests_saved += step_.static_tests_saved;
+    add_step(st.bodies, step_.bodies);
+    add_step(st.scenery, step_.scenery);
 
     std::vector<ScheduledContact>& contacts = in.sink ? step_contacts_ : out.contacts;
     std::vector<ScheduledStaticContact>& static_contacts = in.sink ? step_static_contacts_ : out.static_contacts;
@@ -91,8 +98,8 @@ bool FixedStepScheduler::run(const ScheduleInput& in, ScheduleResult& out) {
       contacts.clear();
       static_contacts.clear();
     }
-    for (const PairContact& pc : step_.contacts) contacts.push_back({pc.pair, pc.contact, t0, t1});
-    for (const StaticContact& sc : step_.static_contacts) static_contacts.push_back({sc.pair, sc.contact, t0, t1});
+    for (const PairContact& pc : step_.bodies.contacts) contacts.push_back({pc.pair, pc.contact, t0, t1});
+    for (const StaticContact& sc : step_.scenery.contacts) static_contacts.push_back({sc.pair, sc.contact, t0, t1});
     if (in.sink && (!contacts.empty() || !static_contacts.empty())) in.sink->found(contacts, static_contacts);
   }
   return out.finished;

@@ -17,6 +17,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/motion/trajectory.hpp>
 #include <ccd/narrow/contact_result.hpp>
+#include <pipeline/pair_counts.hpp>
 #include <pipeline/step_pipeline.hpp>
 #include <ccd/scene/scenery.hpp>
 
@@ -47,23 +48,21 @@ struct ScheduledStaticContact {
 };
 
 /// A run's counts. Fixed steps: every candidate is one pair check and every passed pair one
-/// narrow call; `batches` counts the steps and `refreshes` bodies x steps.
+/// narrow call (less the static pairs the kinematic principle skipped); `batches` counts the
+/// steps and `refreshes` bodies x steps.
 struct ScheduleStats {
-  std::uint64_t pair_checks = 0;   ///< bound pair tests (Bound::test calls, refinements whose
-                                   ///< refined boxes are disjoint, and speed re-checks)
-  std::uint64_t rechecks = 0;      ///< of those, speed re-checks (ScheduleOptions::recheck)
-  std::uint64_t passed = 0;        ///< of those, Possible
-  std::uint64_t narrow_calls = 0;  ///< narrow-phase calls
-  std::uint64_t refreshes = 0;     ///< body bounds built (the first one of every body and the
-                                   ///< pair refinements' included)
-  std::uint64_t candidates = 0;    ///< pairs the broad phase reported, summed over updates
-  std::uint64_t batches = 0;       ///< distinct refresh events (times at which bounds were rebuilt)
-  // Scenery (0 without it); `refreshes` counts the static refinements' bounds (1 each).
-  std::uint64_t static_candidates = 0;    ///< (body, polygon) pairs the static index reported
-  std::uint64_t static_checks = 0;        ///< static tests (Bound::test_static calls, speed re-checks)
-  std::uint64_t static_passed = 0;        ///< of those, Possible
-  std::uint64_t static_narrow_calls = 0;  ///< body-polygon narrow-phase calls
-  std::uint64_t static_tests_saved = 0;   ///< fixed steps, kinematic: passed pairs not solved
+  /// The body pairs: broad-phase pairs summed over updates; bound pair tests (Bound::test
+  /// calls, refinements whose refined boxes are disjoint, and speed re-checks); of those,
+  /// Possible; narrow-phase calls. tests_saved stays 0.
+  PairCounts bodies;
+  /// The body-polygon pairs (0 without scenery): the static index's pairs; static tests
+  /// (Bound::test_static calls, speed re-checks); of those, Possible; body-polygon narrow
+  /// calls; fixed steps, kinematic: passed pairs not solved.
+  PairCounts scenery;
+  std::uint64_t rechecks = 0;   ///< of bodies.checks, speed re-checks (ScheduleOptions::recheck)
+  std::uint64_t refreshes = 0;  ///< body bounds built (the first one of every body, the pair
+                                ///< refinements' and the static refinements' (1 each) included)
+  std::uint64_t batches = 0;    ///< distinct refresh events (times at which bounds were rebuilt)
   // Fixed steps only (0 and empty otherwise).
   std::uint64_t rebuilds = 0;  ///< steps at which the broad phase built its structure from scratch
   std::map<std::string, std::uint64_t, std::less<>> counters;  ///< the broad phase's own, summed over steps

@@ -1,4 +1,3 @@
-#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow_batch.hpp>
 #include <pipeline/step_pipeline.hpp>
@@ -29,11 +28,11 @@ struct Stopwatch {
 // The narrow phase of every passed pair, with the entry `entry(a, b)` chooses.
 template <class Entry>
 void solve_passed(NarrowInput in, StepResult& out, bool from_earliest, const StepContext& ctx, Entry entry) {
-  for (std::size_t i = 0; i < out.passed.size(); ++i) {
-    const BodyPair p = out.passed[i];
-    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.earliest[i], ctx.t1));
+  for (std::size_t i = 0; i < out.bodies.passed.size(); ++i) {
+    const BodyPair p = out.bodies.passed[i];
+    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.bodies.earliest[i], ctx.t1));
     const ContactResult c = entry(p.a, p.b)(in, p.a, p.b);
-    if (c.found()) out.contacts.push_back({p, c});
+    if (c.found()) out.bodies.contacts.push_back({p, c});
   }
 }
 
@@ -53,11 +52,7 @@ void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times
                        std::span<const std::size_t> start_piece) {
   const RigidMotion& motion = *ctx.motion;
   if (motion.centres().periodic()) {
-    out.static_candidates.clear();
-    out.static_passed.clear();
-    out.static_earliest.clear();
-    out.static_contacts.clear();
-    out.static_tests_saved = 0;
+    out.scenery.clear();
     run_periodic(ctx, out, times);
     return;
   }
@@ -76,18 +71,18 @@ void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times
   watch.stop(local.bound);
 
   watch.start();
-  broad_->find_pairs(boxes_, out.candidates);
+  broad_->find_pairs(boxes_, out.bodies.candidates);
   watch.stop(local.broad);
   out.broad_stats = broad_->stats();
 
   watch.start();
-  out.passed.clear();
-  out.earliest.clear();
-  bound_->test_pairs(out.candidates, out.passed, out.earliest);
+  out.bodies.passed.clear();
+  out.bodies.earliest.clear();
+  bound_->test_pairs(out.bodies.candidates, out.bodies.passed, out.bodies.earliest);
   watch.stop(local.bound);
 
   watch.start();
-  out.contacts.clear();
+  out.bodies.contacts.clear();
   NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
   // Decided once per step: plain spheres take the sphere x sphere entry looked up once.
@@ -95,10 +90,10 @@ void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times
       !narrow_.swapped) {
     // Sphere scenes, step queries: the batched exact entry (the same results; a SIMD
     // filter settles most pairs, ccd/narrow/sphere_sphere_narrow_batch.hpp).
-    batch_results_.resize(out.passed.size());
-    sphere_sphere_narrow_batch(in, out.passed, batch_results_);
-    for (std::size_t i = 0; i < out.passed.size(); ++i)
-      if (batch_results_[i].found()) out.contacts.push_back({out.passed[i], batch_results_[i]});
+    batch_results_.resize(out.bodies.passed.size());
+    sphere_sphere_narrow_batch(in, out.bodies.passed, batch_results_);
+    for (std::size_t i = 0; i < out.bodies.passed.size(); ++i)
+      if (batch_results_[i].found()) out.bodies.contacts.push_back({out.bodies.passed[i], batch_results_[i]});
   } else {
     narrow_pairs(in, out, from_earliest, ctx);
   }
@@ -136,48 +131,46 @@ void StepPipeline::set_scenery(std::span<const StaticPolygon> polygons) {
 
 void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local,
                               bool timed) {
-  out.static_candidates.clear();
-  out.static_passed.clear();
-  out.static_earliest.clear();
-  out.static_contacts.clear();
-  out.static_tests_saved = 0;
+  PairStage<StaticPair, StaticContact>& st = out.scenery;
+  st.clear();
   if (scenery_.empty()) return;
   Stopwatch watch(timed);
   const std::size_t n = ctx.start.size();
 
   watch.start();
-  static_index_.find_pairs(std::span<const Aabb>(boxes_.data(), std::min(n, boxes_.size())), out.static_candidates);
+  static_index_.find_pairs(std::span<const Aabb>(boxes_.data(), std::min(n, boxes_.size())), st.candidates);
   watch.stop(local.broad);
 
   watch.start();
-  for (const StaticPair& p : out.static_candidates) {
+  for (const StaticPair& p : st.candidates) {
     const PairTest t = bound_->test_static(p.body, boxes_[p.body], scenery_[p.polygon], static_index_.box(p.polygon));
     if (t.possible()) {
-      out.static_passed.push_back(p);
-      out.static_earliest.push_back(t.earliest);
+      st.passed.push_back(p);
+      st.earliest.push_back(t.earliest);
     }
   }
   watch.stop(local.bound);
 
   watch.start();
+  // The narrow table's polygon column, by the body's kind.
   auto solve = [&](std::uint32_t body, std::uint32_t polygon) {
-    return body_polygon_narrow(in, body, scenery_[polygon]);
+    return table_->find_polygon(in.motion->kind(body))(in, body, scenery_[polygon]);
   };
   if (!options_.kinematic) {
-    for (const StaticPair& p : out.static_passed) {
+    for (const StaticPair& p : st.passed) {
       const ContactResult c = solve(p.body, p.polygon);
-      if (c.found()) out.static_contacts.push_back({p, c});
+      if (c.found()) st.contacts.push_back({p, c});
     }
   } else {
-    // static_passed is sorted by body (the index's order, filtered): one group per body.
-    for (std::size_t i = 0; i < out.static_passed.size();) {
-      const std::uint32_t body = out.static_passed[i].body;
+    // scenery.passed is sorted by body (the index's order, filtered): one group per body.
+    for (std::size_t i = 0; i < st.passed.size();) {
+      const std::uint32_t body = st.passed[i].body;
       body_candidates_.clear();
-      for (; i < out.static_passed.size() && out.static_passed[i].body == body; ++i)
-        body_candidates_.push_back({out.static_passed[i].polygon, out.static_earliest[i]});
-      out.static_tests_saved += kinematic_visit(
+      for (; i < st.passed.size() && st.passed[i].body == body; ++i)
+        body_candidates_.push_back({st.passed[i].polygon, st.earliest[i]});
+      st.tests_saved += kinematic_visit(
           std::span<StaticCandidate>(body_candidates_), [&](std::uint32_t polygon) { return solve(body, polygon); },
-          [&](std::uint32_t polygon, const ContactResult& c) { out.static_contacts.push_back({{body, polygon}, c}); });
+          [&](std::uint32_t polygon, const ContactResult& c) { st.contacts.push_back({{body, polygon}, c}); });
     }
   }
   watch.stop(local.narrow);
@@ -219,17 +212,15 @@ void StepPipeline::run_periodic(const StepContext& ctx, StepResult& out, StepTim
                                  [&](const ImagePair& p, const ImagePair& q) { return key(p) == key(q); }),
                      image_pairs_.end());
 
-  out.candidates.clear();
-  out.passed.clear();
-  out.earliest.clear();
-  out.contacts.clear();
+  PairStage<BodyPair, PairContact>& bs = out.bodies;
+  bs.clear();
   // The local bodies' motion: their owners' shapes and spins on the unwrapped paths.
   const RigidMotion& local_motion = im.motion();
   const NarrowInput base{&local_motion, im.context().start, {}, ctx.t0, ctx.t1, sample_test()};
   const bool from_earliest = options_.narrow_from_earliest && !sample_test();
   for (std::size_t i = 0; i < image_pairs_.size();) {
     const std::uint32_t a = image_pairs_[i].a, b = image_pairs_[i].b;
-    out.candidates.push_back({a, b});
+    bs.candidates.push_back({a, b});
     bool passed = false;
     std::optional<ContactResult> best;
     for (; i < image_pairs_.size() && image_pairs_[i].a == a && image_pairs_[i].b == b; ++i) {
@@ -239,11 +230,11 @@ void StepPipeline::run_periodic(const StepContext& ctx, StepResult& out, StepTim
       watch.stop(local.bound);
       if (!t.possible()) continue;
       if (!passed) {
-        out.passed.push_back({a, b});
-        out.earliest.push_back(t.earliest);
+        bs.passed.push_back({a, b});
+        bs.earliest.push_back(t.earliest);
         passed = true;
       } else {
-        out.earliest.back() = std::min(out.earliest.back(), t.earliest);
+        bs.earliest.back() = std::min(bs.earliest.back(), t.earliest);
       }
       watch.start();
       NarrowInput in = base;
@@ -252,7 +243,7 @@ void StepPipeline::run_periodic(const StepContext& ctx, StepResult& out, StepTim
       watch.stop(local.narrow);
       if (c.found() && (!best || c.toi < best->toi)) best = c;
     }
-    if (best) out.contacts.push_back({BodyPair{a, b}, *best});
+    if (best) bs.contacts.push_back({BodyPair{a, b}, *best});
   }
 
   if (times) {

@@ -12,11 +12,11 @@
 // ctx.start.
 // Stages and their outputs (StepResult):
 //  1. bound.prepare(ctx) -> one box per body (boxes());
-//  2. broad.find_pairs(boxes) -> `candidates` (a < b, each once);
-//  3. bound.test(a, b) for every candidate (through bound.test_pairs) -> `passed` (status
-//     Possible), in candidate order;
+//  2. broad.find_pairs(boxes) -> `bodies.candidates` (a < b, each once);
+//  3. bound.test(a, b) for every candidate (through bound.test_pairs) -> `bodies.passed`
+//     (status Possible) with `bodies.earliest`, in candidate order;
 //  4. narrow table entry for the pair's kinds (sphere x sphere: ccd/narrow/, exact; any
-//     other pair: conservative advancement) for every passed pair -> `contacts` (found:
+//     other pair: conservative advancement) for every passed pair -> `bodies.contacts` (found:
 //     Hit or Overlapping), in passed order. Decided once per step from the motion: when
 //     its bodies are plain spheres (RigidMotion::spheres) the one sphere x sphere entry,
 //     looked up once, serves every pair, else the entry is looked up per pair by the
@@ -25,22 +25,23 @@
 //     same results.
 // Scenery (set_scenery: the scene's static polygons, indexed once in a StaticIndex,
 // ccd/broad_phase/static_index.hpp), after stage 4 on the same boxes:
-//  5. static_index.find_pairs(boxes) -> `static_candidates` (body, polygon), by body;
-//  6. bound.test_static for each -> `static_passed` with `static_earliest`;
-//  7. the narrow phase of a body against a polygon (ccd/narrow/body_polygon_narrow.hpp:
-//     exact for spheres, conservative advancement for other shapes) for each passed pair
-//     -> `static_contacts`. With PipelineOptions::kinematic the passed pairs of
+//  5. static_index.find_pairs(boxes) -> `scenery.candidates` (body, polygon), by body;
+//  6. bound.test_static for each -> `scenery.passed` with `scenery.earliest`;
+//  7. the narrow table's polygon column, the entry of the body's kind (the default table:
+//     exact for spheres, conservative advancement for other shapes,
+//     ccd/narrow/body_polygon_narrow.hpp) for each passed pair
+//     -> `scenery.contacts`. With PipelineOptions::kinematic the passed pairs of
 //     each body are visited by kinematic_visit (pipeline/kinematic_order.hpp): in order
 //     of `earliest`, skipping those that cannot be touched before the body's first certain
-//     contact; `static_tests_saved` counts the skipped ones. The stages' times add to the
+//     contact; `scenery.tests_saved` counts the skipped ones. The stages' times add to the
 //     broad, bound and narrow times. Bounds see a rigid body as its enclosing sphere
 //     (or their own oriented volume); the narrow phase sees its shape. Periodic scenes run
 //     no static stages.
 // Periodic scenes (`ctx.motion->centres().periodic()`): the same stages over the bodies and their images
 // (pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
 // image), each candidate image pair tested and solved with its shift, and reported as the
-// pair of bodies: once per pair in `candidates` and `passed` (earliest: the least over its
-// image pairs) and in `contacts` (the earliest contact over its image pairs). Each image
+// pair of bodies: once per pair in `bodies.candidates` and `bodies.passed` (earliest: the least
+// over its image pairs) and in `bodies.contacts` (the earliest contact over its image pairs). Each image
 // keeps its body's shape and spin (the local motion, PeriodicImages::motion), and the
 // narrow table entry is chosen as for the bodies.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
@@ -54,6 +55,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/narrow_table.hpp>
 #include <pipeline/kinematic_order.hpp>
+#include <pipeline/pair_stage.hpp>
 #include <ccd/broad_phase/static_index.hpp>
 #include <pipeline/periodic_images.hpp>
 #include <ccd/scene/scenery.hpp>
@@ -81,18 +83,12 @@ struct StaticContact {
   ContactResult contact;
 };
 
+/// One step's stages for the body pairs and for the body-polygon pairs
+/// (pipeline/pair_stage.hpp).
 struct StepResult {
-  std::vector<BodyPair> candidates;   ///< broad-phase pairs
-  std::vector<BodyPair> passed;       ///< of those, pairs the bound's test let through
-  std::vector<double> earliest;       ///< per passed pair, the test's earliest possible contact
-  std::vector<PairContact> contacts;  ///< of those, pairs the narrow phase found in contact
-  BroadPhaseStats broad_stats;        ///< the broad phase's stats for this step
-  // Scenery (empty without it):
-  std::vector<StaticPair> static_candidates;   ///< the static index's (body, polygon) pairs
-  std::vector<StaticPair> static_passed;       ///< of those, pairs the bound's test_static let through
-  std::vector<double> static_earliest;         ///< per passed pair, its earliest possible contact
-  std::vector<StaticContact> static_contacts;  ///< of those, pairs the narrow phase found in contact
-  std::uint64_t static_tests_saved = 0;        ///< passed pairs the kinematic principle skipped
+  PairStage<BodyPair, PairContact> bodies;       ///< tests_saved stays 0 (no kinematic order)
+  PairStage<StaticPair, StaticContact> scenery;  ///< empty without scenery
+  BroadPhaseStats broad_stats;                   ///< the broad phase's stats for this step
 };
 
 struct PipelineOptions {

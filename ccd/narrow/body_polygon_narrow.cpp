@@ -2,13 +2,16 @@
 
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/conservative_advancement.hpp>
-#include <ccd/narrow/sphere_polygon_narrow.hpp>
+#include <ccd/narrow/narrow_table.hpp>
 
 namespace ccd {
 
-ContactResult body_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
-  if (in.motion->kind(body) == ShapeKind::Sphere) return sphere_polygon_narrow(in, body, polygon);
+ContactResult polygon_advancement(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
   return conservative_advancement_fixed(in, body, polygon_proxy(polygon));
+}
+
+ContactResult body_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
+  return narrow_table().find_polygon(in.motion->kind(body))(in, body, polygon);
 }
 
 }  // namespace ccd

@@ -1,6 +1,8 @@
 #include <ccd/narrow/narrow_table.hpp>
 
+#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/narrow/conservative_advancement.hpp>
+#include <ccd/narrow/sphere_polygon_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 
 #include <stdexcept>
@@ -21,6 +23,12 @@ NarrowEntry NarrowTable::find(ShapeKind ka, ShapeKind kb) const {
   return e;
 }
 
+PolygonNarrowFn NarrowTable::find_polygon(ShapeKind kind) const {
+  const PolygonNarrowFn fn = polygon_[static_cast<std::size_t>(kind)];
+  if (!fn) throw std::logic_error("no narrow phase for " + std::string(to_string(kind)) + " x polygon");
+  return fn;
+}
+
 const NarrowTable& narrow_table() {
   static const NarrowTable table = [] {
     NarrowTable t;
@@ -29,6 +37,9 @@ const NarrowTable& narrow_table() {
       for (std::size_t k = i; k < kShapeKinds; ++k)
         t.add(static_cast<ShapeKind>(i), static_cast<ShapeKind>(k), &conservative_advancement);
     t.add(ShapeKind::Sphere, ShapeKind::Sphere, &sphere_sphere_narrow);
+    // The polygon column likewise: every kind by conservative advancement, spheres exact.
+    for (std::size_t i = 0; i < kShapeKinds; ++i) t.add_polygon(static_cast<ShapeKind>(i), &polygon_advancement);
+    t.add_polygon(ShapeKind::Sphere, &sphere_polygon_narrow);
     return t;
   }();
   return table;

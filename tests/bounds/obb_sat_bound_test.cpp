@@ -172,15 +172,15 @@ TEST_CASE("obb_sat misses no contact of the certified rigid truth", "[bounds][ob
         INFO(method << " dt " << dt);
         const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(method), dt);
         CHECK(r.conservative);
-        CHECK(r.missed == 0);
-        CHECK(r.detected + r.initial_contacts == r.events);
+        CHECK(r.bodies.missed == 0);
+        CHECK(r.bodies.detected + r.bodies.initial_contacts == r.bodies.events);
         CHECK(r.self_check_unexpected == 0);
       }
       // Sampling at dt = 1/4 tunnels through the spinning contacts (rotation alone).
       if (dt == 0.25 && std::string(c.name).rfind("free", 0) == 0) {
         for (const char* method : {"sphere/brute", "frame_aabb/brute", "obb/brute"}) {
           INFO(method);
-          CHECK(ccdlab::run_method(in, ccdlab::parse_method(method), dt).missed > 0);
+          CHECK(ccdlab::run_method(in, ccdlab::parse_method(method), dt).bodies.missed > 0);
         }
       }
     }

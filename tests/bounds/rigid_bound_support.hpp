@@ -230,8 +230,8 @@ inline void check_pipeline_superset(const std::string& name) {
     for (int k = 0; k <= 8; ++k) {
       const double t = k / 8.0;
       pipeline.run(st.context(Knowledge::Instant, t, t), step);
-      const std::set<BodyPair> passed(step.passed.begin(), step.passed.end());
-      CHECK(step.passed.size() <= step.candidates.size());
+      const std::set<BodyPair> passed(step.bodies.passed.begin(), step.bodies.passed.end());
+      CHECK(step.bodies.passed.size() <= step.bodies.candidates.size());
       const auto n = static_cast<std::uint32_t>(st.traj.size());
       for (std::uint32_t a = 0; a < n; ++a) {
         for (std::uint32_t b = a + 1; b < n; ++b) {

@@ -47,14 +47,14 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
   for (const std::string& name : ccdlab::test::sanitizer_cover(names)) {
     INFO(c.generator << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
-    CHECK(r.events == truth.events().size());
-    CHECK(r.initial_contacts + r.detected + r.missed == r.events);
+    CHECK(r.bodies.events == truth.events().size());
+    CHECK(r.bodies.initial_contacts + r.bodies.detected + r.bodies.missed == r.bodies.events);
     CHECK(r.self_check_unexpected == 0);
     CHECK(r.self_check_undetected == 0);
     CHECK(r.counts_stable);
-    if (r.continuous && r.conservative) CHECK(r.missed == 0);
+    if (r.continuous && r.conservative) CHECK(r.bodies.missed == 0);
     // The bullets tunnel through the field at this dt: sampling must miss some of them,
     // or the scene does not test what it is meant to.
-    if (!r.continuous && std::string(c.generator) == "bullets") CHECK(r.missed > 0);
+    if (!r.continuous && std::string(c.generator) == "bullets") CHECK(r.bodies.missed > 0);
   }
 }

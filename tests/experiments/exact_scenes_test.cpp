@@ -157,10 +157,10 @@ TEST_CASE("exact scenes: conservative methods miss nothing, every self-check is 
         const ccdlab::RunRecord r = ccdlab::run_method(in, m, dt);
         CHECK(r.self_check_unexpected == 0);
         CHECK(r.self_check_undetected == 0);
-        if (r.conservative && r.continuous) CHECK(r.missed == 0);
+        if (r.conservative && r.continuous) CHECK(r.bodies.missed == 0);
         // dt = 1/16 puts a sample on every tangency at 0, 1/2 and T: a discrete method
         // sees each of them (they touch exactly at the sample).
-        if (!r.continuous && dt == 0.0625 && c.name == "breaks") CHECK(r.detected + r.initial_contacts >= 4);
+        if (!r.continuous && dt == 0.0625 && c.name == "breaks") CHECK(r.bodies.detected + r.bodies.initial_contacts >= 4);
       }
     }
   }

@@ -124,12 +124,12 @@ TEST_CASE("every method on freely tumbling bodies: zero misses for conservative 
     if (!spec.continuous() && name != "sphere/brute") continue;
 #endif
     const ccdlab::RunRecord r = ccdlab::run_method(in, spec, c.dt);
-    CHECK(r.events == truth.events().size());
-    CHECK(r.initial_contacts + r.detected + r.missed == r.events);
+    CHECK(r.bodies.events == truth.events().size());
+    CHECK(r.bodies.initial_contacts + r.bodies.detected + r.bodies.missed == r.bodies.events);
     CHECK(r.self_check_unexpected == 0);
     CHECK(r.self_check_undetected == 0);
-    if (r.continuous && r.conservative) CHECK(r.missed == 0);
-    if (!r.continuous && r.missed > 0) sampling_missed = true;
+    if (r.continuous && r.conservative) CHECK(r.bodies.missed == 0);
+    if (!r.continuous && r.bodies.missed > 0) sampling_missed = true;
   }
 #ifndef CCDLAB_SANITIZED
   if (std::string(c.name) != "tumbling box") CHECK(sampling_missed);

@@ -28,7 +28,7 @@ int main() {
   ccd::StateCursor(centres).evaluate(t0, start);          // every body's state at t0
   ccd::StepResult step;                                   // bound -> broad phase -> test -> narrow
   pipeline.run({.t0 = t0, .t1 = t1, .start = start, .exact = &centres, .walls = scene.box, .motion = &motion}, step);
-  for (const ccd::PairContact& c : step.contacts)
+  for (const ccd::PairContact& c : step.bodies.contacts)
     std::cout << c.pair.a << " and " << c.pair.b << " touch at t = " << c.contact.toi << "\n";
   std::cout << truth.events.size() << " contact events in " << scene.horizon << " s\n";
   return 0;

@@ -122,12 +122,12 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   for (const std::string& name : ccdlab::test::sanitizer_cover(names)) {
     INFO(c.name << " " << name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), c.dt);
-    CHECK(r.events == truth.events().size());
-    CHECK(r.initial_contacts + r.detected + r.missed == r.events);
+    CHECK(r.bodies.events == truth.events().size());
+    CHECK(r.bodies.initial_contacts + r.bodies.detected + r.bodies.missed == r.bodies.events);
     CHECK(r.self_check_unexpected == 0);
     CHECK(r.self_check_undetected == 0);
-    if (r.continuous && r.conservative) CHECK(r.missed == 0);
-    if (!r.continuous && r.missed > 0) sampling_missed = true;
+    if (r.continuous && r.conservative) CHECK(r.bodies.missed == 0);
+    if (!r.continuous && r.bodies.missed > 0) sampling_missed = true;
   }
   // The spin is fast against dt: sampling tunnels, or the scene does not test rotation.
   if (!mixed) CHECK(sampling_missed);

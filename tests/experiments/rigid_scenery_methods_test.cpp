@@ -49,14 +49,14 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
     for (const std::string& name : names) {
       INFO(what << " " << name << " dt " << dt);
       const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), dt);
-      CHECK(r.static_events == st.events.size());
-      CHECK(r.static_initial_contacts + r.static_detected + r.static_missed == r.static_events);
+      CHECK(r.scenery.events == st.events.size());
+      CHECK(r.scenery.initial_contacts + r.scenery.detected + r.scenery.missed == r.scenery.events);
       CHECK(r.self_check_unexpected == 0);
       const bool kinematic = name.find("kinematic=1") != std::string::npos;
-      if (r.continuous && r.conservative && (!kinematic || kinematic_exact)) CHECK(r.static_missed == 0);
-      if (!r.continuous) out.sampled_missed += r.static_missed;
-      out.detected += r.static_detected;
-      out.saved += r.static_tests_saved;
+      if (r.continuous && r.conservative && (!kinematic || kinematic_exact)) CHECK(r.scenery.missed == 0);
+      if (!r.continuous) out.sampled_missed += r.scenery.missed;
+      out.detected += r.scenery.detected;
+      out.saved += r.scenery.tests_saved;
     }
   }
   return out;

@@ -56,29 +56,29 @@ TEST_CASE("discrete methods at a coarse dt tunnel, at a fine dt they detect", "[
   SECTION("dt = 2: samples 0, 2, 4, 6, 8, 10 all miss [4.5, 5.5]") {
     const auto r = f.run("aabb/brute", 2.0);
     CHECK(r.steps == 6);
-    CHECK(r.events == 1);
-    CHECK(r.detected == 0);
-    CHECK(r.missed == 1);
-    CHECK(r.candidates == 0);
+    CHECK(r.bodies.events == 1);
+    CHECK(r.bodies.detected == 0);
+    CHECK(r.bodies.missed == 1);
+    CHECK(r.bodies.candidates == 0);
     CHECK(r.self_check_unexpected == 0);
     CHECK(r.self_check_undetected == 0);
   }
   SECTION("dt = 1: detected at t = 5, centres coincide: lag 0.5, penetration 1") {
     const auto r = f.run("sphere/brute", 1.0);
     CHECK(r.steps == 11);
-    CHECK(r.detected == 1);
-    CHECK(r.missed == 0);
+    CHECK(r.bodies.detected == 1);
+    CHECK(r.bodies.missed == 0);
     CHECK(r.mean_lag == Approx(0.5).epsilon(1e-9));
     CHECK(r.max_penetration == Approx(1.0).epsilon(8 * eps));
-    CHECK(r.confirmed == 1);  // only the sample t = 5 is inside the event
+    CHECK(r.bodies.confirmed == 1);  // only the sample t = 5 is inside the event
     CHECK(r.self_check_undetected == 0);
   }
   SECTION("dt = 0.5: detected at t = 4.5 exactly, touching: lag 0, penetration 0") {
     const auto r = f.run("aabb/brute", 0.5);
-    CHECK(r.detected == 1);
+    CHECK(r.bodies.detected == 1);
     CHECK(r.mean_lag == Approx(0.0).margin(1e-9));
     CHECK(r.max_penetration == Approx(0.0).margin(1e-12));
-    CHECK(r.confirmed == 3);  // samples 4.5, 5.0, 5.5
+    CHECK(r.bodies.confirmed == 3);  // samples 4.5, 5.0, 5.5
   }
 }
 
@@ -88,8 +88,8 @@ TEST_CASE("continuous methods catch the tunnelling pair at every dt", "[runner]"
     for (double dt : {10.0, 3.0, 2.0, 0.7}) {
       INFO(m << " dt=" << dt);
       const auto r = f.run(m, dt);
-      CHECK(r.detected == 1);
-      CHECK(r.missed == 0);
+      CHECK(r.bodies.detected == 1);
+      CHECK(r.bodies.missed == 0);
       CHECK(r.mean_lag == Approx(0.0).margin(1e-9));
       CHECK(r.self_check_unexpected == 0);
     }
@@ -109,9 +109,9 @@ TEST_CASE("a bounded bound with a too-small acceleration bound misses, and says 
   const Fixture f(s);
   REQUIRE(f.truth.events().size() == 1);
   CHECK(f.truth.events()[0].enter == Approx(std::sqrt(2.0)).epsilon(1e-12));
-  CHECK(f.run("horn:4/brute", 2.0, 0.0).missed == 1);
-  CHECK(f.run("horn:4/brute", 2.0, 2.0).missed == 0);
-  CHECK(f.run("enclosing_sphere/brute", 2.0, 2.0).missed == 0);
+  CHECK(f.run("horn:4/brute", 2.0, 0.0).bodies.missed == 1);
+  CHECK(f.run("horn:4/brute", 2.0, 2.0).bodies.missed == 0);
+  CHECK(f.run("enclosing_sphere/brute", 2.0, 2.0).bodies.missed == 0);
 }
 
 TEST_CASE("a record stores the options it ran with and the broad phase's counters", "[runner]") {
@@ -121,8 +121,8 @@ TEST_CASE("a record stores the options it ran with and the broad phase's counter
   CHECK(plain.options == nlohmann::json{{"bound", {{"pieces", 2}}}, {"broad_phase", {{"cell", 0.0}, {"threads", 1}}}});
   CHECK(set.options == nlohmann::json{{"bound", {{"pieces", 3}}}, {"broad_phase", {{"cell", 3.0}, {"threads", 2}}}});
   // The grid is exact whatever its cell: the same pairs, the same detection.
-  CHECK(set.candidates == plain.candidates);
-  CHECK(set.detected == plain.detected);
+  CHECK(set.bodies.candidates == plain.bodies.candidates);
+  CHECK(set.bodies.detected == plain.bodies.detected);
   CHECK(plain.counters.empty());  // the grid has no counters of its own
   const ccdlab::RunRecord sap = f.run("aabb/sap", 0.25);
   REQUIRE(sap.counters.size() == 1);
@@ -159,9 +159,9 @@ TEST_CASE("the sample set is every t_k = k * dt (the double product) with t_k <=
   CHECK(f.truth.events()[0].exit == 4.3);
   const auto r = f.run("sphere/brute", 0.1);
   CHECK(r.steps == 44);
-  CHECK(r.missed == 0);
+  CHECK(r.bodies.missed == 0);
   CHECK(r.self_check_unexpected == 0);
-  CHECK(f.run("capsule/brute", 0.1).missed == 0);
+  CHECK(f.run("capsule/brute", 0.1).bodies.missed == 0);
 }
 
 TEST_CASE("events in progress at t = 0 are counted apart from misses, lag and penetration", "[runner]") {
@@ -176,17 +176,17 @@ TEST_CASE("events in progress at t = 0 are counted apart from misses, lag and pe
   REQUIRE(f.truth.events().size() == 2);
   SECTION("a discrete method that tunnels the later event") {
     const auto r = f.run("sphere/brute", 2.0);
-    CHECK(r.events == 2);
-    CHECK(r.initial_contacts == 1);
-    CHECK(r.detected == 0);
-    CHECK(r.missed == 1);
+    CHECK(r.bodies.events == 2);
+    CHECK(r.bodies.initial_contacts == 1);
+    CHECK(r.bodies.detected == 0);
+    CHECK(r.bodies.missed == 1);
     CHECK(r.max_penetration == 0.0);  // the initial overlap of 0.5 does not count
   }
   SECTION("a continuous method: zero depth, zero lag") {
     const auto r = f.run("capsule/brute", 2.0);
-    CHECK(r.initial_contacts == 1);
-    CHECK(r.detected == 1);
-    CHECK(r.missed == 0);
+    CHECK(r.bodies.initial_contacts == 1);
+    CHECK(r.bodies.detected == 1);
+    CHECK(r.bodies.missed == 0);
     CHECK(r.max_penetration <= 4 * eps);
     CHECK(r.max_lag == 0.0);
   }
@@ -225,26 +225,26 @@ TEST_CASE("list_missed: the missed events are the truth events no sample falls i
   // Samples 0, 2, 4, 6, 8, 10: [1.25, 2.25] holds 2 and [5, 6] holds 6; [2.5, 3.5] and
   // [6.5, 7.5] hold none.
   const auto r = run_method(in, parse_method("aabb/sap"), 2.0);
-  CHECK(r.missed == 2);
-  REQUIRE(r.missed_events.size() == 2);
-  CHECK(r.missed_events[0].a == 4);
-  CHECK(r.missed_events[0].b == 5);
-  CHECK(r.missed_events[0].enter == Approx(2.5).epsilon(1e-12));
-  CHECK(r.missed_events[0].exit == Approx(3.5).epsilon(1e-12));
-  CHECK(r.missed_events[1].a == 0);
-  CHECK(r.missed_events[1].b == 1);
-  CHECK(r.missed_events[1].enter == Approx(6.5).epsilon(1e-12));
+  CHECK(r.bodies.missed == 2);
+  REQUIRE(r.bodies.missed_events.size() == 2);
+  CHECK(r.bodies.missed_events[0].a == 4);
+  CHECK(r.bodies.missed_events[0].b == 5);
+  CHECK(r.bodies.missed_events[0].enter == Approx(2.5).epsilon(1e-12));
+  CHECK(r.bodies.missed_events[0].exit == Approx(3.5).epsilon(1e-12));
+  CHECK(r.bodies.missed_events[1].a == 0);
+  CHECK(r.bodies.missed_events[1].b == 1);
+  CHECK(r.bodies.missed_events[1].enter == Approx(6.5).epsilon(1e-12));
   const auto j = ccdlab::to_json(r, true);
   REQUIRE(j["missed_events"].size() == 2);
   CHECK(j["missed_events"][0]["a"] == 4);
-  CHECK(j["missed_events"][1]["enter"].get<double>() == r.missed_events[1].enter);
+  CHECK(j["missed_events"][1]["enter"].get<double>() == r.bodies.missed_events[1].enter);
   CHECK_FALSE(ccdlab::to_json(r, false).contains("missed_events"));
   // Every event missed at a dt that skips them all, none by a conservative bound.
-  CHECK(run_method(in, parse_method("aabb/sap"), 4.0).missed_events.size() == 4);  // samples 0, 4, 8: in none
-  CHECK(run_method(in, parse_method("capsule/sap"), 4.0).missed_events.empty());
+  CHECK(run_method(in, parse_method("aabb/sap"), 4.0).bodies.missed_events.size() == 4);  // samples 0, 4, 8: in none
+  CHECK(run_method(in, parse_method("capsule/sap"), 4.0).bodies.missed_events.empty());
   // Without the option the list stays empty.
   in.list_missed = false;
-  CHECK(run_method(in, parse_method("aabb/sap"), 2.0).missed_events.empty());
+  CHECK(run_method(in, parse_method("aabb/sap"), 2.0).bodies.missed_events.empty());
 }
 
 TEST_CASE("conservative in records: the guarantee as the method ran", "[runner]") {

@@ -85,19 +85,19 @@ Checked check_methods(const ccd::Scene& scene, double dt, const std::string& wha
     for (const std::string& name : names) {
       INFO(what << " " << name << " dt " << dt);
       const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), dt);
-      CHECK(r.static_events == events.size());
-      CHECK(r.static_initial_contacts + r.static_detected + r.static_missed == r.static_events);
+      CHECK(r.scenery.events == events.size());
+      CHECK(r.scenery.initial_contacts + r.scenery.detected + r.scenery.missed == r.scenery.events);
       CHECK(r.self_check_unexpected == 0);
       if (r.scheduled) {
-        CHECK(r.static_bound_candidates <= r.static_pair_checks);
-        CHECK(r.static_confirmed <= r.static_narrow_calls);
-        CHECK(ccdlab::to_json(r)["static_narrow_calls"] == r.static_narrow_calls);
+        CHECK(r.scenery.passed <= r.scenery.checks);
+        CHECK(r.scenery.confirmed <= r.scenery.narrow_calls);
+        CHECK(ccdlab::to_json(r)["static_narrow_calls"] == r.scenery.narrow_calls);
       }
       const bool kinematic = name.find("kinematic=1") != std::string::npos;
-      if (r.continuous && r.conservative && (!kinematic || kinematic_exact)) CHECK(r.static_missed == 0);
-      if (!kinematic) CHECK(r.static_tests_saved == 0);
-      out.detected += r.static_detected;
-      out.saved += r.static_tests_saved;
+      if (r.continuous && r.conservative && (!kinematic || kinematic_exact)) CHECK(r.scenery.missed == 0);
+      if (!kinematic) CHECK(r.scenery.tests_saved == 0);
+      out.detected += r.scenery.detected;
+      out.saved += r.scenery.tests_saved;
     }
   }
   return out;
@@ -140,12 +140,12 @@ TEST_CASE("a scene without scenery has every static field 0", "[runner][scenery]
   in.motion = &scene_motion;
   in.truth = &truth;
   const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method("capsule/grid@fixed:kinematic=1"), 0.25);
-  CHECK(r.detected == 1);
-  CHECK(r.static_events == 0);
-  CHECK(r.static_detected == 0);
-  CHECK(r.static_missed == 0);
-  CHECK(r.static_candidates == 0);
-  CHECK(r.static_tests_saved == 0);
+  CHECK(r.bodies.detected == 1);
+  CHECK(r.scenery.events == 0);
+  CHECK(r.scenery.detected == 0);
+  CHECK(r.scenery.missed == 0);
+  CHECK(r.scenery.candidates == 0);
+  CHECK(r.scenery.tests_saved == 0);
   const nlohmann::json j = ccdlab::to_json(r);
   CHECK(j["static_events"] == 0);
   CHECK(j["static_missed"] == 0);

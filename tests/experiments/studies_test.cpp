@@ -102,20 +102,20 @@ TEST_CASE("study tunnelling: conservative bounds miss nothing, discrete methods 
     for (double dt : {0.1, 0.01}) {
       CAPTURE(m, dt);
       const auto r = s.run(m, dt);
-      CHECK(r.missed == 0);
-      CHECK(r.detected + r.initial_contacts == r.events);
+      CHECK(r.bodies.missed == 0);
+      CHECK(r.bodies.detected + r.bodies.initial_contacts == r.bodies.events);
       check_self(r);
     }
   const auto coarse = s.run("aabb/sap", 0.1);
   const auto fine = s.run("aabb/sap", 0.001);
-  CHECK(coarse.missed > 0);
-  CHECK(fine.missed < coarse.missed);
+  CHECK(coarse.bodies.missed > 0);
+  CHECK(fine.bodies.missed < coarse.bodies.missed);
   check_self(coarse);
   check_self(fine);
   // Every discrete broad phase sees the same samples: the same misses.
   for (const char* m : {"sphere/sap", "aabb/grid", "aabb/hgrid", "aabb/rtree"}) {
     CAPTURE(m);
-    CHECK(s.run(m, 0.1).missed == coarse.missed);
+    CHECK(s.run(m, 0.1).bodies.missed == coarse.bodies.missed);
   }
 }
 
@@ -132,10 +132,10 @@ TEST_CASE("study sap-coherence: swaps per step grow with dt, the first step is t
     const auto sweep = s.run("aabb/sweep", dt);
     const auto g = s.run("aabb/grid", dt);
     // The same boxes, the same pairs, whatever the coherence.
-    CHECK(sap.candidates == g.candidates);
-    CHECK(sweep.candidates == g.candidates);
-    CHECK(sap.missed == g.missed);
-    CHECK(sweep.missed == g.missed);
+    CHECK(sap.bodies.candidates == g.bodies.candidates);
+    CHECK(sweep.bodies.candidates == g.bodies.candidates);
+    CHECK(sap.bodies.missed == g.bodies.missed);
+    CHECK(sweep.bodies.missed == g.bodies.missed);
     for (const auto* r : {&sap, &sweep}) {
       CHECK(r->rebuilds >= 1);  // the first step builds
       CHECK(r->rebuilds <= r->steps);
@@ -175,9 +175,9 @@ TEST_CASE("study equal-endpoints: every method finds every touching pair, strict
     const auto r = s.run(m, 0.5);
     // Every pair touches from t = 0 on: all 144 events are initial contacts, and every
     // method confirms every pair at every sample or step.
-    CHECK(r.initial_contacts == 144);
-    CHECK(r.missed == 0);
-    CHECK(r.confirmed == 144 * r.steps);
+    CHECK(r.bodies.initial_contacts == 144);
+    CHECK(r.bodies.missed == 0);
+    CHECK(r.bodies.confirmed == 144 * r.steps);
     check_self(r);
   }
   // The same boxes (sphere boxes at t = 0, exact: centres and radii are dyadic) compared
@@ -205,16 +205,16 @@ TEST_CASE("study grazing: the truth reports tangent events, conservative methods
     for (double dt : {0.25, 1.0 / 64, 0.01}) {
       CAPTURE(m, dt);
       const auto r = s.run(m, dt);
-      CHECK(r.missed == 0);
+      CHECK(r.bodies.missed == 0);
       check_self(r);
     }
   // Discrete at dt = 1/64: every on-grid exact tangency and crossing is at a sample time
   // (4 + 4 detected); nothing off the grid (the crossings last 3.5e-4 s, a quarter tick
   // or more from any sample).
   const auto r = s.run("sphere/sap", 1.0 / 64);
-  CHECK(r.detected >= 8);
-  CHECK(r.detected <= 12);
-  CHECK(s.run("sphere/sap", 0.01).detected < r.detected);
+  CHECK(r.bodies.detected >= 8);
+  CHECK(r.bodies.detected <= 12);
+  CHECK(s.run("sphere/sap", 0.01).bodies.detected < r.bodies.detected);
 }
 
 TEST_CASE("study precision: conservative methods miss nothing at offset 1e6", "[studies]") {
@@ -223,7 +223,7 @@ TEST_CASE("study precision: conservative methods miss nothing at offset 1e6", "[
   for (const std::string& m : kConservative) {
     CAPTURE(m);
     const auto r = s.run(m, 0.05);
-    CHECK(r.missed == 0);
+    CHECK(r.bodies.missed == 0);
     check_self(r);
   }
 }
@@ -237,12 +237,12 @@ TEST_CASE("study bound-violation: no misses at ratio >= 1, misses at 0.25", "[st
     for (double ratio : {1.0, 1.5}) {
       CAPTURE(ratio);
       const auto r = s.run(m, 0.25, ratio * A);
-      CHECK(r.missed == 0);
+      CHECK(r.bodies.missed == 0);
       check_self(r);
     }
-    CHECK(s.run(m, 0.25, 0.25 * A).missed > 0);
+    CHECK(s.run(m, 0.25, 0.25 * A).bodies.missed > 0);
   }
-  CHECK(s.run("capsule/sap", 0.25, 0.25 * A).missed == 0);  // exact motion: A not used
+  CHECK(s.run("capsule/sap", 0.25, 0.25 * A).bodies.missed == 0);  // exact motion: A not used
 }
 
 TEST_CASE("study scheduling: @earliest misses nothing and detects what fixed steps detect", "[studies]") {
@@ -261,16 +261,16 @@ TEST_CASE("study scheduling: @earliest misses nothing and detects what fixed ste
         CAPTURE(m, dt);
         const auto fixed = s.run(m, dt);
         const auto sched = s.run(std::string(m) + "@earliest", dt);
-        CHECK(sched.missed == 0);
-        CHECK(sched.detected == fixed.detected);
+        CHECK(sched.bodies.missed == 0);
+        CHECK(sched.bodies.detected == fixed.bodies.detected);
         check_self(sched);
         // A narrow call only where the bounds allow contact from the call on: never more
         // calls than the pair tests that passed.
-        CHECK(sched.narrow_calls <= sched.bound_candidates);
+        CHECK(sched.bodies.narrow_calls <= sched.bodies.passed);
         CHECK(sched.refreshes >= s.traj.size());
         const auto adapted = s.run(std::string(m) + "@earliest:reach=4", dt);  // speed-adapted windows
-        CHECK(adapted.missed == 0);
-        CHECK(adapted.detected == fixed.detected);
+        CHECK(adapted.bodies.missed == 0);
+        CHECK(adapted.bodies.detected == fixed.bodies.detected);
         check_self(adapted);
       }
     }
@@ -286,14 +286,14 @@ TEST_CASE("study scheduling: a violated bound's earliest time costs misses", "[s
   const auto from_start = s.run("horn:4/grid", 0.25, 0.25 * A);
   const auto from_earliest = s.run("horn:4/grid@fixed:narrow_from_earliest=1", 0.25, 0.25 * A);
   const auto scheduled = s.run("horn:4/grid@earliest", 0.25, 0.25 * A);
-  CHECK(from_start.missed > 0);
-  CHECK(from_earliest.missed > from_start.missed);
-  CHECK(scheduled.missed > 0);
+  CHECK(from_start.bodies.missed > 0);
+  CHECK(from_earliest.bodies.missed > from_start.bodies.missed);
+  CHECK(scheduled.bodies.missed > 0);
   check_self(from_earliest);
   check_self(scheduled);
   // Assumption holding: the same detections either way.
-  CHECK(s.run("horn:4/grid@fixed:narrow_from_earliest=1", 0.25, A).missed == 0);
-  CHECK(s.run("horn:4/grid@earliest", 0.25, A).missed == 0);
+  CHECK(s.run("horn:4/grid@fixed:narrow_from_earliest=1", 0.25, A).bodies.missed == 0);
+  CHECK(s.run("horn:4/grid@earliest", 0.25, A).bodies.missed == 0);
 }
 
 TEST_CASE("study spinning: rotation alone tunnels through sampling, conservative bounds miss nothing", "[studies][rigid]") {
@@ -307,14 +307,14 @@ TEST_CASE("study spinning: rotation alone tunnels through sampling, conservative
     for (const char* m : {"sphere/sap", "aabb/sap", "frame_aabb/sap", "obb/sap"}) {
       const ccdlab::RunRecord r = st.run(m, dt);
       check_self(r);
-      (dt == 0.25 ? coarse : fine) += r.missed;
+      (dt == 0.25 ? coarse : fine) += r.bodies.missed;
     }
     for (const char* m : {"swept_aabb/sap", "capsule/sap", "obb_sat:1/sap", "obb_sat:4/sap", "obb_sat:4/sap@earliest"}) {
       INFO(m << " dt " << dt);
       const ccdlab::RunRecord r = st.run(m, dt);
       check_self(r);
       CHECK(r.conservative);
-      CHECK(r.missed == 0);
+      CHECK(r.bodies.missed == 0);
     }
   }
   // Sampling at a quarter second misses contacts made by rotation alone, and more of them
@@ -336,11 +336,11 @@ TEST_CASE("study fit: orientation-aware bounds report fewer false positives on l
     for (const ccdlab::RunRecord* r : {&sphere, &aabb, &frame, &obb, &swept, &sat}) check_self(*r);
     // Equal misses: every discrete bound holds the shape at the sample, so the exact sample
     // test decides; every continuous bound here is conservative.
-    CHECK(aabb.missed == sphere.missed);
-    CHECK(frame.missed == sphere.missed);
-    CHECK(obb.missed == sphere.missed);
-    CHECK(swept.missed == 0);
-    CHECK(sat.missed == 0);
+    CHECK(aabb.bodies.missed == sphere.bodies.missed);
+    CHECK(frame.bodies.missed == sphere.bodies.missed);
+    CHECK(obb.bodies.missed == sphere.bodies.missed);
+    CHECK(swept.bodies.missed == 0);
+    CHECK(sat.bodies.missed == 0);
     // The turned shape's box lies inside the enclosing sphere's box.
     CHECK(frame.false_positives <= aabb.false_positives);
     if (e == 16.0) {
@@ -370,22 +370,22 @@ TEST_CASE("study thin-obstacles: discrete methods pass through thin plates, cons
   in.static_events = events;
   in.acceleration_bound = scene.max_acceleration();
   auto run = [&](const std::string& method, double dt) { return ccdlab::run_method(in, ccdlab::parse_method(method), dt); };
-  CHECK(run("sphere/grid", 0.1).static_missed > 0);  // crossing a plate takes milliseconds
+  CHECK(run("sphere/grid", 0.1).scenery.missed > 0);  // crossing a plate takes milliseconds
   for (const char* m : {"swept_aabb/grid", "capsule/grid", "horn:4/grid", "enclosing_sphere/grid"}) {
     INFO(m);
-    CHECK(run(m, 0.1).static_missed == 0);
+    CHECK(run(m, 0.1).scenery.missed == 0);
   }
   const ccdlab::RunRecord k = run("capsule/grid@fixed:kinematic=1", 0.1);
-  CHECK(k.static_tests_saved > 0);
-  CHECK(k.static_tests_saved <= k.static_bound_candidates);
+  CHECK(k.scenery.tests_saved > 0);
+  CHECK(k.scenery.tests_saved <= k.scenery.passed);
   // The study's scheduled methods: no miss either, and static checks made per body window.
   for (const char* m : {"capsule/grid@earliest", "capsule/grid@earliest:reach=4", "horn:4/grid@earliest"}) {
     INFO(m);
     const ccdlab::RunRecord r = run(m, 0.1);
     CHECK(r.conservative);
-    CHECK(r.static_missed == 0);
-    CHECK(r.static_detected > 0);
+    CHECK(r.scenery.missed == 0);
+    CHECK(r.scenery.detected > 0);
     CHECK(r.self_check_unexpected == 0);
-    CHECK(r.static_narrow_calls >= r.static_confirmed);
+    CHECK(r.scenery.narrow_calls >= r.scenery.confirmed);
   }
 }

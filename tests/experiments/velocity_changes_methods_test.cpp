@@ -107,10 +107,10 @@ TEST_CASE("velocity changes: conservative methods miss nothing, every self-check
       for (const double dt : dts) {
         INFO(c.name << " " << name << " dt " << dt);
         const ccdlab::RunRecord r = ccdlab::run_method(in, m, dt);
-        CHECK(r.initial_contacts + r.detected + r.missed == r.events);
+        CHECK(r.bodies.initial_contacts + r.bodies.detected + r.bodies.missed == r.bodies.events);
         CHECK(r.self_check_unexpected == 0);
         CHECK(r.self_check_undetected == 0);
-        if (r.continuous && r.conservative) CHECK(r.missed == 0);
+        if (r.continuous && r.conservative) CHECK(r.bodies.missed == 0);
         // Exact knowledge sees the pieces: conservative at every dt, scheduled or not.
         if (r.continuous && r.knowledge == "exact") CHECK(r.conservative);
         if (r.continuous && r.knowledge == "bounded") {
@@ -151,19 +151,19 @@ TEST_CASE("velocity changes: a Bounded bound misses a jump inside its step (docu
     INFO(name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), 0.125);
     CHECK_FALSE(r.conservative);
-    CHECK(r.missed == 1);
+    CHECK(r.bodies.missed == 1);
   }
   for (const char* name : {"capsule/brute", "swept_aabb/brute"}) {
     INFO(name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), 0.125);
     CHECK(r.conservative);
-    CHECK(r.detected == 1);
+    CHECK(r.bodies.detected == 1);
   }
   // With the jump on a step start (dt = 1/32) the same Bounded bounds see it.
   for (const char* name : {"horn/brute", "horn_sat/brute", "enclosing_sphere/brute"}) {
     INFO(name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), 0x1p-5);
     CHECK(r.conservative);
-    CHECK(r.detected == 1);
+    CHECK(r.bodies.detected == 1);
   }
 }

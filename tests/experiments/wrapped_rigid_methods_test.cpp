@@ -36,11 +36,11 @@ void check_every_method(const ccd::Scene& scene, double dt, const std::string& w
   for (const std::string& name : ccdlab::all_method_names()) {
     INFO(name);
     const ccdlab::RunRecord r = ccdlab::run_method(in, ccdlab::parse_method(name), dt);
-    CHECK(r.events == truth.events().size());
-    CHECK(r.initial_contacts + r.detected + r.missed == r.events);
+    CHECK(r.bodies.events == truth.events().size());
+    CHECK(r.bodies.initial_contacts + r.bodies.detected + r.bodies.missed == r.bodies.events);
     CHECK(r.self_check_unexpected == 0);
     CHECK(r.self_check_undetected == 0);
-    if (r.continuous && r.conservative) CHECK(r.missed == 0);
+    if (r.continuous && r.conservative) CHECK(r.bodies.missed == 0);
   }
 }
 

@@ -185,9 +185,9 @@ TEST_CASE("the earliest scheduler misses no body-static event on the dyadic case
             CHECK(o.unexpected == 0);
             CHECK(o.found == 9);
             const ccd::ScheduleStats& st = sched.stats();
-            CHECK(st.static_passed <= st.static_checks);
-            CHECK(st.static_candidates <= st.static_checks);
-            CHECK(st.static_narrow_calls >= sched.static_contacts().size());
+            CHECK(st.scenery.passed <= st.scenery.checks);
+            CHECK(st.scenery.candidates <= st.scenery.checks);
+            CHECK(st.scenery.narrow_calls >= sched.static_contacts().size());
             found += o.found;
           }
     CHECK(found > 0);
@@ -201,9 +201,9 @@ TEST_CASE("the earliest scheduler without scenery makes no static check", "[pipe
   std::vector<ccd::ScheduledContact> contacts;
   REQUIRE(sched.run(traj, scene.horizon, 0.0, scene.box, contacts));
   CHECK(sched.static_contacts().empty());
-  CHECK(sched.stats().static_candidates == 0);
-  CHECK(sched.stats().static_checks == 0);
-  CHECK(sched.stats().static_narrow_calls == 0);
+  CHECK(sched.stats().scenery.candidates == 0);
+  CHECK(sched.stats().scenery.checks == 0);
+  CHECK(sched.stats().scenery.narrow_calls == 0);
 }
 
 TEST_CASE("the earliest scheduler finds a ball's floor contact from the check, not the window start",
@@ -228,8 +228,8 @@ TEST_CASE("the earliest scheduler finds a ball's floor contact from the check, n
   CHECK(c.from > 0.0);
   CHECK(c.from <= 0.375);
   CHECK(c.to == 1.0);
-  CHECK(sched.stats().static_checks == 1);
-  CHECK(sched.stats().static_narrow_calls == 1);
+  CHECK(sched.stats().scenery.checks == 1);
+  CHECK(sched.stats().scenery.narrow_calls == 1);
 }
 
 TEST_CASE("the earliest scheduler misses no rigid body-static event on the hand-worked cases",

@@ -86,7 +86,7 @@ TEST_CASE("the earliest scheduler misses no event, whatever its options", "[pipe
           REQUIRE(sched.run(traj, scene.horizon, A, scene.box, contacts));
           CHECK(undetected(events, contacts, 1e-9 * scene.horizon) == 0);
           const ccd::ScheduleStats& st = sched.stats();
-          CHECK(st.passed <= st.pair_checks);
+          CHECK(st.bodies.passed <= st.bodies.checks);
           CHECK(st.refreshes >= traj.size());
           for (const ccd::ScheduledContact& c : contacts) {
             CHECK(c.from <= c.contact.toi);
@@ -125,14 +125,14 @@ TEST_CASE("the earliest scheduler checks a pair only when it can touch", "[pipel
     CHECK(contacts[0].pair == ccd::BodyPair{0, 1});
     CHECK(contacts[0].contact.toi == 0.75);
     // One narrow call, at the refined check, no earlier than half the way in.
-    CHECK(sched.stats().narrow_calls == 1);
+    CHECK(sched.stats().bodies.narrow_calls == 1);
     CHECK(contacts[0].from >= 0.5);
     CHECK(contacts[0].from <= 0.75);
     // The far bodies were never paired: only (0, 1) was tested (at the start and after
     // each refinement).
-    CHECK(sched.stats().pair_checks <= 4);
-    if (refresh_bodies) CHECK(sched.stats().candidates == sched.stats().pair_checks);
-    else CHECK(sched.stats().candidates == 1);  // refinements re-test the pair alone
+    CHECK(sched.stats().bodies.checks <= 4);
+    if (refresh_bodies) CHECK(sched.stats().bodies.candidates == sched.stats().bodies.checks);
+    else CHECK(sched.stats().bodies.candidates == 1);  // refinements re-test the pair alone
    }
   }
 }
@@ -168,7 +168,7 @@ TEST_CASE("speed-adapted windows: fast bodies refresh often, slow ones once per 
         CHECK(sched.stats().refreshes == 4 + 2 + 63 + 3);
         // Body 0 checked against body 1 only in the windows where their boxes meet; body 2
         // and 3 never meet anything.
-        CHECK(sched.stats().candidates <= 4);
+        CHECK(sched.stats().bodies.candidates <= 4);
       }
     }
   }
@@ -321,7 +321,7 @@ TEST_CASE("speed re-checks miss nothing on adversarial dyadic scenes", "[pipelin
             }
             CHECK(exact);
             const ccd::ScheduleStats& st = sched.stats();
-            CHECK(st.rechecks <= st.pair_checks);
+            CHECK(st.rechecks <= st.bodies.checks);
             // No bound is built beyond one per body and window (no refinement).
             CHECK(st.refreshes <= traj.size() * static_cast<std::uint64_t>(std::ceil(c.scene.horizon / dt)));
           }
@@ -350,9 +350,9 @@ TEST_CASE("speed re-checks: a close pair moving in parallel costs a bounded numb
     REQUIRE(sched.run(traj, s.horizon, 0.0, std::nullopt, contacts));
     CHECK(contacts.empty());
     const double chunks = s.horizon / (chunk * 1.0 / 40.0);
-    CHECK(sched.stats().narrow_calls >= 1);
-    CHECK(double(sched.stats().narrow_calls) <= chunks + 1.0);
-    CHECK(double(sched.stats().pair_checks) <= 2.0 * chunks + 3.0);
+    CHECK(sched.stats().bodies.narrow_calls >= 1);
+    CHECK(double(sched.stats().bodies.narrow_calls) <= chunks + 1.0);
+    CHECK(double(sched.stats().bodies.checks) <= 2.0 * chunks + 3.0);
     CHECK(sched.stats().refreshes == 2);  // one bound per body: nothing rebuilt
   }
 }
@@ -373,9 +373,9 @@ TEST_CASE("speed re-checks: far pairs skip ahead, the narrow phase covers only t
   CHECK(contacts[0].contact.toi == 0.75);
   CHECK(contacts[0].from <= 0.75);
   CHECK(contacts[0].from >= 0.75 - 1e-12);  // the re-check's earliest, up to its rounding margin
-  CHECK(sched.stats().narrow_calls == 1);
+  CHECK(sched.stats().bodies.narrow_calls == 1);
   CHECK(sched.stats().refreshes == 2);
-  CHECK(sched.stats().pair_checks <= 3);  // the bound's test and at most two re-checks
+  CHECK(sched.stats().bodies.checks <= 3);  // the bound's test and at most two re-checks
 }
 
 namespace {
@@ -552,9 +552,9 @@ TEST_CASE("checks run in rounds as they are made find what checks queued at thei
           ccd::StepTimes times;
           REQUIRE(rounds.run(traj, scene.horizon, A, scene.box, a, &times));
           REQUIRE(queued.run(traj, scene.horizon, A, scene.box, b));
-          CHECK(rounds.stats().pair_checks == queued.stats().pair_checks);
-          CHECK(rounds.stats().passed == queued.stats().passed);
-          CHECK(rounds.stats().narrow_calls == queued.stats().narrow_calls);
+          CHECK(rounds.stats().bodies.checks == queued.stats().bodies.checks);
+          CHECK(rounds.stats().bodies.passed == queued.stats().bodies.passed);
+          CHECK(rounds.stats().bodies.narrow_calls == queued.stats().bodies.narrow_calls);
           CHECK(rounds.stats().refreshes == queued.stats().refreshes);
           REQUIRE(a.size() == b.size());
           // A pair's contacts in time order, as the rounds run them.

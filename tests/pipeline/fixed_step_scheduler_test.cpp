@@ -75,10 +75,10 @@ LoopCounts plain_loop(const Small& s, const std::string& method, double dt) {
     ctx.start = states;
     pipeline.run(ctx, step, nullptr, cursor.pieces());
     ++c.steps;
-    c.candidates += step.candidates.size();
-    c.passed += step.passed.size();
-    c.contacts += step.contacts.size();
-    for (const ccd::PairContact& pc : step.contacts) c.found.push_back({pc.pair, pc.contact, ctx.t0, ctx.t1});
+    c.candidates += step.bodies.candidates.size();
+    c.passed += step.bodies.passed.size();
+    c.contacts += step.bodies.contacts.size();
+    for (const ccd::PairContact& pc : step.bodies.contacts) c.found.push_back({pc.pair, pc.contact, ctx.t0, ctx.t1});
   }
   return c;
 }
@@ -106,10 +106,10 @@ TEST_CASE("fixed steps through the library count what a loop of step pipelines c
       const bool continuous = std::string(method).rfind("aabb/", 0) != 0;
       CHECK(r.stats.batches == loop.steps);
       CHECK(r.stats.batches == ccd::fixed_step_count(s.scene.horizon, dt, continuous));
-      CHECK(r.stats.candidates == loop.candidates);
-      CHECK(r.stats.pair_checks == loop.candidates);
-      CHECK(r.stats.passed == loop.passed);
-      CHECK(r.stats.narrow_calls == loop.passed);
+      CHECK(r.stats.bodies.candidates == loop.candidates);
+      CHECK(r.stats.bodies.checks == loop.candidates);
+      CHECK(r.stats.bodies.passed == loop.passed);
+      CHECK(r.stats.bodies.narrow_calls == loop.passed);
       CHECK(r.stats.refreshes == loop.steps * s.traj.size());
       REQUIRE(r.contacts.size() == loop.contacts);
       for (std::size_t i = 0; i < r.contacts.size(); ++i) {
@@ -147,15 +147,15 @@ TEST_CASE("fixed steps through the library give the counts of the runner's recor
       const ccd::ScheduleResult r =
           run_fixed(s, name.substr(0, at), at == std::string::npos ? "fixed" : name.substr(at + 1), dt);
       CHECK(rec.steps == r.stats.batches);
-      CHECK(rec.candidates == r.stats.candidates);
-      CHECK(rec.bound_candidates == r.stats.passed);
-      CHECK(rec.confirmed == r.contacts.size());
-      CHECK(rec.false_positives == r.stats.passed - r.contacts.size());
+      CHECK(rec.bodies.candidates == r.stats.bodies.candidates);
+      CHECK(rec.bodies.passed == r.stats.bodies.passed);
+      CHECK(rec.bodies.confirmed == r.contacts.size());
+      CHECK(rec.false_positives == r.stats.bodies.passed - r.contacts.size());
       CHECK(rec.rebuilds == r.stats.rebuilds);
       REQUIRE(rec.counters.size() == r.stats.counters.size());
       for (const auto& [name_, value] : rec.counters) CHECK(r.stats.counters.at(name_) == value);
-      CHECK(rec.detected + rec.missed + rec.initial_contacts == truth.events().size());
-      if (rec.conservative) CHECK(rec.missed == 0);
+      CHECK(rec.bodies.detected + rec.bodies.missed + rec.bodies.initial_contacts == truth.events().size());
+      if (rec.conservative) CHECK(rec.bodies.missed == 0);
     }
   }
 }

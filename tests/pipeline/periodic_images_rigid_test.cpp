@@ -117,11 +117,11 @@ TEST_CASE("every bound x every broad phase on a wrapped rigid scene: brute-force
     pipeline.run(ctx, step);
     reference.run(ctx, ref);
     images += pipeline.boxes().size() - n;
-    CHECK(as_set(step.candidates).size() == step.candidates.size());
-    CHECK(as_set(step.candidates) == as_set(ref.candidates));
-    CHECK(as_set(step.passed) == as_set(ref.passed));
+    CHECK(as_set(step.bodies.candidates).size() == step.bodies.candidates.size());
+    CHECK(as_set(step.bodies.candidates) == as_set(ref.bodies.candidates));
+    CHECK(as_set(step.bodies.passed) == as_set(ref.bodies.passed));
     std::set<ccd::BodyPair> found;
-    for (const ccd::PairContact& c : step.contacts) found.insert(c.pair);
+    for (const ccd::PairContact& c : step.bodies.contacts) found.insert(c.pair);
     // Pairs whose overlap the truth certifies at the sample time (discrete) or somewhere in
     // the step (continuous: its enter bracket starts no later than t1).
     for (std::size_t e = 0; e < w.truth.events.size(); ++e) {

@@ -59,9 +59,9 @@ TEST_CASE("the step pipeline on a wrapped scene equals brute force and the perio
     reference.run(ctx, ref);
     images += pipeline.boxes().size() - n;
     // Each body pair once, the same pairs as brute force.
-    CHECK(as_set(step.candidates).size() == step.candidates.size());
-    CHECK(as_set(step.candidates) == as_set(ref.candidates));
-    CHECK(as_set(step.passed) == as_set(ref.passed));
+    CHECK(as_set(step.bodies.candidates).size() == step.bodies.candidates.size());
+    CHECK(as_set(step.bodies.candidates) == as_set(ref.bodies.candidates));
+    CHECK(as_set(step.bodies.passed) == as_set(ref.bodies.passed));
 
     std::set<ccd::BodyPair> touching;
     for (std::uint32_t a = 0; a < n; ++a)
@@ -69,7 +69,7 @@ TEST_CASE("the step pipeline on a wrapped scene equals brute force and the perio
         if (sample ? ccd::in_contact(motion, a, b, t0) : ccd::pair_first_contact(motion, a, b, t0, t1).has_value())
           touching.insert({a, b});
     std::set<ccd::BodyPair> found;
-    for (const ccd::PairContact& c : step.contacts) {
+    for (const ccd::PairContact& c : step.bodies.contacts) {
       found.insert(c.pair);
       if (!sample) {
         const auto toi = ccd::pair_first_contact(motion, c.pair.a, c.pair.b, t0, t1);

@@ -111,10 +111,10 @@ TEST_CASE("the registry's factory builds each scheduler with its options", "[pip
       ccd::EarliestScheduler direct(capsule.make(), capsule.make(), capsule.info->knowledge, grid.make(), o);
       const auto made = e.make({&capsule, &grid, 0.1});
       const ccd::ScheduleStats a = stats_of(*made, g.input()), b = stats_of(direct, g.input());
-      CHECK(a.pair_checks == b.pair_checks);
+      CHECK(a.bodies.checks == b.bodies.checks);
       CHECK(a.rechecks == b.rechecks);
       CHECK(a.refreshes == b.refreshes);
-      CHECK(a.narrow_calls == b.narrow_calls);
+      CHECK(a.bodies.narrow_calls == b.bodies.narrow_calls);
       CHECK(a.batches == b.batches);
     }
     // The options change what runs: no refinement builds fewer bounds, re-checks re-check.
@@ -146,10 +146,10 @@ TEST_CASE("the registry's factory builds each scheduler with its options", "[pip
     plain->set_scenery(floor.scenery);
     kinematic->set_scenery(floor.scenery);
     const ccd::ScheduleStats a = stats_of(*plain, in), b = stats_of(*kinematic, in);
-    REQUIRE(a.static_passed > 0);
-    CHECK(a.static_tests_saved == 0);
-    CHECK(b.static_tests_saved > 0);  // the kinematic principle skipped some passed pairs
-    CHECK(b.static_narrow_calls + b.static_tests_saved == b.static_passed);
+    REQUIRE(a.scenery.passed > 0);
+    CHECK(a.scenery.tests_saved == 0);
+    CHECK(b.scenery.tests_saved > 0);  // the kinematic principle skipped some passed pairs
+    CHECK(b.scenery.narrow_calls + b.scenery.tests_saved == b.scenery.passed);
   }
 }
 

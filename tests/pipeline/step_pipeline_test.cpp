@@ -62,14 +62,14 @@ TEST_CASE("the step pipeline equals the brute-force reference at every stage", "
   for (std::uint32_t a = 0; a < n; ++a)
     for (std::uint32_t b = a + 1; b < n; ++b)
       if (boxes[a].overlaps(boxes[b])) overlapping.insert({a, b});
-  CHECK(step.candidates.size() == overlapping.size());
-  CHECK(as_set(step.candidates) == overlapping);
+  CHECK(step.bodies.candidates.size() == overlapping.size());
+  CHECK(as_set(step.bodies.candidates) == overlapping);
 
   // Bound test: the Possible candidates, in candidate order.
   std::vector<ccd::BodyPair> possible;
-  for (const ccd::BodyPair& p : step.candidates)
+  for (const ccd::BodyPair& p : step.bodies.candidates)
     if (pipeline.bound().test(p.a, p.b).possible()) possible.push_back(p);
-  CHECK(step.passed == possible);
+  CHECK(step.bodies.passed == possible);
 
   // Narrow phase: exactly the pairs in contact, among all pairs.
   std::set<ccd::BodyPair> touching;
@@ -78,7 +78,7 @@ TEST_CASE("the step pipeline equals the brute-force reference at every stage", "
       if (sample ? ccd::in_contact(motion, a, b, t0) : ccd::pair_first_contact(motion, a, b, t0, t1).has_value())
         touching.insert({a, b});
   std::set<ccd::BodyPair> found;
-  for (const ccd::PairContact& c : step.contacts) {
+  for (const ccd::PairContact& c : step.bodies.contacts) {
     found.insert(c.pair);
     CHECK(c.contact.found());
     CHECK(c.contact.toi >= t0);
@@ -123,14 +123,14 @@ TEST_CASE("the narrow phase started at earliest finds the same contacts", "[pipe
       ccd::StepResult a, b;
       from_start.run(ctx, a);
       from_earliest.run(ctx, b);
-      CHECK(a.passed == b.passed);
-      REQUIRE(a.contacts.size() == b.contacts.size());
-      for (std::size_t i = 0; i < a.contacts.size(); ++i) {
-        CHECK(a.contacts[i].pair == b.contacts[i].pair);
-        CHECK(b.contacts[i].contact.toi == Approx(a.contacts[i].contact.toi).epsilon(0).margin(1e-12));
+      CHECK(a.bodies.passed == b.bodies.passed);
+      REQUIRE(a.bodies.contacts.size() == b.bodies.contacts.size());
+      for (std::size_t i = 0; i < a.bodies.contacts.size(); ++i) {
+        CHECK(a.bodies.contacts[i].pair == b.bodies.contacts[i].pair);
+        CHECK(b.bodies.contacts[i].contact.toi == Approx(a.bodies.contacts[i].contact.toi).epsilon(0).margin(1e-12));
       }
-      for (const double e : b.earliest) later_starts += e > t0;
-      contacts += static_cast<long>(a.contacts.size());
+      for (const double e : b.bodies.earliest) later_starts += e > t0;
+      contacts += static_cast<long>(a.bodies.contacts.size());
     }
   }
   CHECK(contacts > 20);

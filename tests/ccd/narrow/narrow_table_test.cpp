@@ -1,6 +1,9 @@
-// The narrow-phase table and its sphere x sphere entry, on a pair worked out by hand.
+// The narrow-phase table and its sphere x sphere entry, on a pair worked out by hand; its
+// polygon column.
 #include <ccd/motion/state_cursor.hpp>
+#include <ccd/narrow/body_polygon_narrow.hpp>
 #include <ccd/narrow/narrow_table.hpp>
+#include <ccd/narrow/sphere_polygon_narrow.hpp>
 #include <ccd/narrow/sphere_sphere_narrow.hpp>
 
 #include <catch2/catch.hpp>
@@ -101,4 +104,26 @@ TEST_CASE("sphere x sphere sample tests use the truth's definition of touching",
   ccd::StateCursor(m).evaluate(4.5, start);
   const ccd::RigidMotion motion(m);
   CHECK(ccd::sphere_sphere_narrow({&motion, start, {}, 4.5, 4.5, true}, 0, 1).found());
+}
+
+TEST_CASE("the narrow table's polygon column: spheres exact, other shapes by conservative advancement",
+          "[narrow][scenery]") {
+  const ccd::NarrowTable& table = ccd::narrow_table();
+  REQUIRE(table.contains_polygon(ccd::ShapeKind::Sphere));
+  CHECK(table.find_polygon(ccd::ShapeKind::Sphere) == &ccd::sphere_polygon_narrow);
+  for (std::size_t k = 0; k < ccd::kShapeKinds; ++k) {
+    const auto kind = static_cast<ccd::ShapeKind>(k);
+    INFO(ccd::to_string(kind));
+    if (kind != ccd::ShapeKind::Sphere) CHECK(table.find_polygon(kind) == &ccd::polygon_advancement);
+  }
+  // An empty table has no polygon entry and says which one is missing; add_polygon fills
+  // one kind only and replaces an existing entry.
+  ccd::NarrowTable t;
+  CHECK_FALSE(t.contains_polygon(ccd::ShapeKind::Box));
+  CHECK_THROWS_WITH(t.find_polygon(ccd::ShapeKind::Box), Catch::Contains("no narrow phase for box x polygon"));
+  t.add_polygon(ccd::ShapeKind::Box, &ccd::polygon_advancement);
+  CHECK(t.find_polygon(ccd::ShapeKind::Box) == &ccd::polygon_advancement);
+  CHECK_FALSE(t.contains_polygon(ccd::ShapeKind::Sphere));
+  t.add_polygon(ccd::ShapeKind::Box, &ccd::sphere_polygon_narrow);
+  CHECK(t.find_polygon(ccd::ShapeKind::Box) == &ccd::sphere_polygon_narrow);
 }

@@ -23,6 +23,6 @@ int main() {
                step);
   // Over one step covering the whole horizon, a conservative bound finds every pair of the truth.
   std::cout << "bodies " << scene.bodies.size() << " events " << events.size() << " contacts "
-            << step.contacts.size() << "\n";
-  return events.empty() || step.contacts.size() < 1 ? 1 : 0;
+            << step.bodies.contacts.size() << "\n";
+  return events.empty() || step.bodies.contacts.size() < 1 ? 1 : 0;
 }
