@@ -1,4 +1,5 @@
 #include <bounds/obb_sat_bound.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 #include <bounds/rounding.hpp>
 #include <bounds/shape_boxes.hpp>
 #include <ccd/motion/piece_walk.hpp>
@@ -9,8 +10,6 @@
 
 namespace ccd {
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 /// Exact box of the centre's path of `body` over [u0, u1] (the pieces' tight boxes), given
 /// k = Trajectories::piece_index(body, u0).

@@ -1,4 +1,5 @@
 #include <bounds/oriented_trapezoid.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -6,7 +7,6 @@
 
 namespace ccd {
 namespace {
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 }  // namespace
 
 Aabb OrientedTrapezoid::hull() const {

@@ -14,7 +14,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kAnimateDescription =
     "Animates the scene from T0 to T1 (default: the whole horizon): every body, projected on\n"
     "the two widest axes of the box; the samples the method took (every dt); each contact\n"
     "the method missed, highlighted in red where and when it happened; a zoom on the missed\n"
@@ -23,7 +23,7 @@ constexpr const char* kDescription =
     "missed contacts are recomputed with the ccdlab Python module and checked against the\n"
     "record's count. .mp4 needs ffmpeg. Runs scripts/animate.py with /usr/bin/python3.\n";
 
-constexpr const char* kFooter =
+constexpr const char* kAnimateFooter =
     "The work is estimated first: more than 2000 frames, 2e6 body-frames (bodies x frames) or\n"
     "1e11 body-steps for the run that finds the missed contacts (bodies x horizon / dt) is\n"
     "refused with the estimate unless --force (docs/formats.md).\n"
@@ -40,8 +40,8 @@ bool finite_number(const std::string& text) {
 int run_animate(std::span<const std::string> args) {
   std::string scene, results, method, dt, from, to, fps, per_step, out;
   bool force = false;
-  CommandLine cli("animate", kDescription, "animate");
-  cli.footer(kFooter);
+  CommandLine cli("animate", kAnimateDescription, "animate");
+  cli.footer(kAnimateFooter);
   cli.positional("SCENE.json", scene, "the scene of the results");
   cli.text("--results", results, "RESULTS.json", "a results file of this scene (ccdlab run)");
   cli.text("--method", method, "METHOD", "the method whose record is drawn (e.g. aabb/sap)");

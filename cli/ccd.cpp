@@ -46,7 +46,7 @@ std::string micros(double seconds) {
   return buf;
 }
 
-constexpr const char* kDescription =
+constexpr const char* kCcdDescription =
     "Query files (FILE.csv): reads queries in the public CCD benchmark's format (8 rows per\n"
     "query, 7 integer columns: numerator and denominator of x, y, z, then the expected 0/1\n"
     "result; rows v, f0, f1, f2 or ea0, ea1, eb0, eb1 at t = 0, then the same at t = 1), runs\n"
@@ -130,7 +130,7 @@ MeshCcdArgs mesh_arguments(const CommandLine& cli, CcdArguments& a) {
 }
 
 int run_ccd(std::span<const std::string> args) {
-  CommandLine cli("ccd", kDescription, "ccd");
+  CommandLine cli("ccd", kCcdDescription, "ccd");
   cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
   CcdArguments a;
   declare_ccd_options(cli, a);

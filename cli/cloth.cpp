@@ -24,13 +24,13 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kClothDescription =
     "Simulates the mass-spring cloth with implicit Euler (docs/cloth.md) and writes every E-th\n"
     "state (default 10, and the last) as JSON: triangles, obstacles and per frame the time and\n"
     "the particle positions (x, y, z per particle).\n"
     "Pictures: /usr/bin/python3 scripts/plot_cloth.py FRAMES.json -o PICTURE.png\n";
 
-constexpr const char* kFooter =
+constexpr const char* kClothFooter =
     "Every form refuses, before the simulation, a run above 1e9 particle-steps (particles x\n"
     "steps; `queries` simulates the scene's whole run whatever A:B) or one that would keep\n"
     "more than 4e9 bytes of states, with the estimate; --force runs it anyway.\n"
@@ -49,8 +49,8 @@ int run_cloth(std::span<const std::string> args) {
   int n = 32, every = 10;
   bool cull = false, force = false;
   std::optional<int> steps;
-  CommandLine cli("cloth", kDescription, "cloth");
-  cli.footer(kFooter);
+  CommandLine cli("cloth", kClothDescription, "cloth");
+  cli.footer(kClothFooter);
   cli.positional("SCENE", scene_arg, "drape, twist, pile or a ccdlab-cloth/1 file");
   cli.text("-o,--output", out_path, "FRAMES.json", "the frames (written atomically)", "-o needs a file name");
   declare_cloth_scene_options(cli, n, &steps);

@@ -53,7 +53,7 @@ std::string query_text(const std::vector<ccd::cloth::ExportedQuery>& qs) {
 
 }  // namespace
 
-constexpr const char* kDescription =
+constexpr const char* kClothQueriesDescription =
     "Simulates the cloth and writes, for the step intervals A, A+1, ..., B-1 (interval s runs\n"
     "from state s to state s + 1, each vertex moving linearly; 0 <= A < B <= the scene's\n"
     "steps), every vertex-face and edge-edge candidate the culler returns (one instance over\n"
@@ -72,7 +72,7 @@ int run_cloth_queries(std::span<const std::string> args) {
   bool force = false;
   std::optional<double> hard_below;
   std::uint64_t first = 0, end = 0;
-  CommandLine cli("cloth queries", kDescription, "cloth");
+  CommandLine cli("cloth queries", kClothQueriesDescription, "cloth");
   cli.footer("The whole run is simulated whatever A:B: above 1e9 particle-steps or 4e9 bytes of states\n"
              "it is refused before the simulation with the estimate unless --force.\n"
              "\n"

@@ -25,7 +25,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kImportDescription =
     "usage: ccdlab import FRAMES.csv -o SCENE.json [--radius R] [--shapes SHAPES.json] [--force]\n"
     "\n"
     "Turns recorded frames (from any simulator) into a scene: between two frames of a body\n"
@@ -41,7 +41,7 @@ constexpr const char* kDescription =
     "label (numerically when all labels are integers). No walls, no gravity: the\n"
     "recording holds them. `ccdlab poses` output imports as it is, with --radius.\n";
 
-constexpr const char* kFooter =
+constexpr const char* kImportFooter =
     "Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written);\n"
     "a bad row is named by its line and column (frames.csv: line 7: radius: must be > 0).";
 
@@ -52,8 +52,8 @@ int run_import(std::span<const std::string> args) {
   std::string csv_path, out_path, shapes_path;
   bool force = false;
   ccd::FrameImportOptions options;
-  CommandLine cli("import", kDescription, "import");
-  cli.footer(kFooter);
+  CommandLine cli("import", kImportDescription, "import");
+  cli.footer(kImportFooter);
   cli.positional("FRAMES.csv", csv_path, "the recorded frames");
   cli.text("-o,--output", out_path, "SCENE.json", "the scene (written atomically; '-' = stdout)",
            "missing value after -o");

@@ -51,7 +51,7 @@ ccd::cloth::MeshFramePair cloth_frames(const std::string& scene_arg, int n, int 
   return m;
 }
 
-constexpr const char* kDescription =
+constexpr const char* kMeshFramesDescription =
     "Writes DIR/frame0.ply and DIR/frame1.ply (binary little-endian, double coordinates; --ascii\n"
     "for text), one triangle mesh at t = 0 and t = 1, for `ccdlab ccd DIR/frame0.ply DIR/frame1.ply`\n"
     "(docs/mesh-ccd.md). The folder appears whole or not at all; an existing one is replaced only\n"
@@ -70,7 +70,7 @@ int run_mesh_frames(std::span<const std::string> args) {
   int n = 32, step = 0;
   bool force = false, ascii = false;
   ccd::cloth::PlyEncoding encoding;
-  CommandLine cli("mesh-frames", kDescription, "mesh-frames");
+  CommandLine cli("mesh-frames", kMeshFramesDescription, "mesh-frames");
   cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (nothing written).");
   cli.positional("NAME", name, "a generator (sheet_on_sphere, tori, crumpled) or a cloth scene");
   cli.text("-o,--output", out_path, "DIR", "the folder of frame0.ply and frame1.ply", "-o needs a folder name");

@@ -16,14 +16,14 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kPackDescription =
     "Writes the scene SCENE (JSON, or binary) in the binary scene format (docs/formats.md,\n"
     "\"ccdlab-scene-binary/1\"), which every command that reads a scene accepts in place of\n"
     "the JSON file and reads in a fraction of the time. It carries the scene's digest, so a\n"
     "truth file computed from either file fits both. Only sphere scenes (no shapes, spin or\n"
     "static scenery) have a binary form; others are refused.\n";
 
-constexpr const char* kFooter =
+constexpr const char* kPackFooter =
     "A binary SCENE is checked on the way: its stored digest must be the digest of the scene\n"
     "it holds (loading it elsewhere does not recompute the digest).\n"
     "\n"
@@ -32,8 +32,8 @@ constexpr const char* kFooter =
 int run_pack(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool json = false;
-  CommandLine cli("pack", kDescription, "pack");
-  cli.footer(kFooter);
+  CommandLine cli("pack", kPackDescription, "pack");
+  cli.footer(kPackFooter);
   cli.positional("SCENE", scene_path, "the scene (JSON or binary)");
   cli.text("-o,--output", out_path, "OUT", "the output (written atomically; '-' = stdout)", "missing value after -o");
   cli.flag("--json", json,

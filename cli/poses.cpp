@@ -24,7 +24,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kPosesDescription =
     "Writes every body's pose at the times A, A + STEP, A + 2 STEP, ... up to B (each time\n"
     "computed as A + k STEP) from the scene's motion model: the centre from the exact\n"
     "trajectory (walls, gravity, acceleration changes) and the orientation from the\n"
@@ -64,7 +64,7 @@ Times parse_times(const CommandLine& cli, const std::string& times) {
 int run_poses(std::span<const std::string> args) {
   std::string scene_path, out_path, times;
   bool force = false;
-  CommandLine cli("poses", kDescription, "poses");
+  CommandLine cli("poses", kPosesDescription, "poses");
   cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).");
   cli.positional("SCENE.json", scene_path, "the scene");
   cli.text("--times", times, "A:B:STEP",

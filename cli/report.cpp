@@ -101,7 +101,7 @@ void check_output_folder(const std::string& dir, const std::vector<std::string>&
                           "cannot be created: the folder " + parent.string() + " does not take new files");
 }
 
-constexpr const char* kDescription =
+constexpr const char* kReportDescription =
     "Writes DIR/report.md and DIR/report.html (charts embedded; opens in a browser without a\n"
     "server), and the charts DIR/missed.png and DIR/cost.png: per method the zero-miss frontier\n"
     "(the largest dt at and below which it missed nothing), the missed fraction per dt and the\n"
@@ -109,7 +109,7 @@ constexpr const char* kDescription =
     "on one chart and one table. When no method missed anything the report says so first.\n"
     "Runs scripts/report.py with /usr/bin/python3 (matplotlib).\n";
 
-constexpr const char* kFooter =
+constexpr const char* kReportFooter =
     "The results files are checked as ccdlab merge checks them (each file once), and DIR before\n"
     "the work; the four outputs are written to temporary files and renamed into place together,\n"
     "so a failure (a full disk) leaves every old output as it was and no temporary file.\n"
@@ -119,8 +119,8 @@ constexpr const char* kFooter =
 int run_report(std::span<const std::string> args) {
   std::vector<std::string> results;
   std::string out, title;
-  CommandLine cli("report", kDescription, "report");
-  cli.footer(kFooter);
+  CommandLine cli("report", kReportDescription, "report");
+  cli.footer(kReportFooter);
   cli.positionals("RESULTS.json", results, "results files (after --, names that begin with -)");
   cli.value(
       "-o,--output", "DIR", "the report's folder (created when missing)",

@@ -18,7 +18,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kSceneDescription =
     "Writes a generated scene (format ccdlab-scene/1) atomically; -o - writes to standard output.\n"
     "The output is checked before generating: a regular file, in a folder that takes a file.\n"
     "Values are numbers; offset takes one number (all axes) or three: offset=1e6,0,-1e6.\n"
@@ -47,7 +47,7 @@ int run_scene(std::span<const std::string> args) {
   bool have_output = false;
   std::vector<std::string> assignments;  // NAME=VALUE, parsed once the generator is known
   std::uint64_t bodies = 0;
-  CommandLine cli("scene", kDescription, "");  // its errors name the generator, not --help
+  CommandLine cli("scene", kSceneDescription, "");  // its errors name the generator, not --help
   cli.footer(make_scene_footer());
   cli.positional("GENERATOR", generator, "a generator (listed below)");
   cli.positionals("NAME=VALUE", assignments, "the generator's parameters (listed below with their defaults)", false);

@@ -26,13 +26,13 @@
 namespace ccdlab {
 namespace {
 
-constexpr const char* kDescription =
+constexpr const char* kTruthDescription =
     "Computes every maximal closed time interval in [0, horizon] during which two bodies\n"
     "touch or overlap (distance of centres <= sum of radii), exactly (docs/truth.md), and,\n"
     "for a scene with scenery, every interval during which a body touches a static polygon\n"
     "(static_events, docs/scenery.md).\n";
 
-constexpr const char* kFooter =
+constexpr const char* kTruthFooter =
     "Without -o a summary is printed. Exit status: 0 success, 1 runtime failure,\n"
     "2 bad input or usage (no file written).";
 
@@ -53,8 +53,8 @@ int run_truth(std::span<const std::string> args) {
   std::string scene_path, out_path;
   bool quiet = false, force = false;
   ccd::TruthOptions options;
-  CommandLine cli("truth", kDescription, "truth");
-  cli.footer(kFooter);
+  CommandLine cli("truth", kTruthDescription, "truth");
+  cli.footer(kTruthFooter);
   cli.positional("SCENE.json", scene_path, "the scene (ccdlab-scene/1 or /2, or binary)");
   cli.text("-o,--output", out_path, "OUT.json",
            "write the intervals as ccdlab-truth/2 (atomically; '-' = stdout); checked\n"

@@ -30,7 +30,7 @@ namespace {
 // page holds all of it and its parsed form several times over.
 constexpr double kMaxViewInputBytes = 1e8;
 
-constexpr const char* kDescription =
+constexpr const char* kViewDescription =
     "Writes one self-contained HTML page (three.js inlined; open it from disk, no server and no\n"
     "network needed) that plays the scene: play, pause, scrub time; spheres and rigid shapes;\n"
     "for a method and dt of the results, its sample instants, its bounds, the truth's contacts\n"
@@ -40,7 +40,7 @@ constexpr const char* kDescription =
 int run_view(std::span<const std::string> args) {
   std::string scene_path, results_path, truth_path, out_path;
   bool force = false;
-  CommandLine cli("view", kDescription, "view");
+  CommandLine cli("view", kViewDescription, "view");
   cli.footer("Exit status: 0 success, 1 runtime failure, 2 bad input or usage (no file written).");
   cli.positional("SCENE.json", scene_path,
                  "a ccdlab-scene/1 or /2 file, or the frames of a cloth run\n"

@@ -25,31 +25,31 @@ using nlohmann::json;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-json vec(const ccd::Vec3& v) { return json::array({view_number(v.x()), view_number(v.y()), view_number(v.z())}); }
+json view_vec(const ccd::Vec3& v) { return json::array({view_number(v.x()), view_number(v.y()), view_number(v.z())}); }
 
 json volume_json(const ccd::Volume& v) {
   json j{{"kind", std::string(ccd::to_string(v.kind))}, {"t", json::array({v.t0, v.t1})}};  // times in full
   switch (v.kind) {
     case ccd::Volume::Kind::Box:
-      j["lo"] = vec(v.a);
-      j["hi"] = vec(v.b);
+      j["lo"] = view_vec(v.a);
+      j["hi"] = view_vec(v.b);
       break;
     case ccd::Volume::Kind::Sphere:
-      j["c"] = vec(v.a);
+      j["c"] = view_vec(v.a);
       j["r"] = view_number(v.radius);
       break;
     case ccd::Volume::Kind::Capsule:
-      j["a"] = vec(v.a);
-      j["b"] = vec(v.b);
+      j["a"] = view_vec(v.a);
+      j["b"] = view_vec(v.b);
       j["r"] = view_number(v.radius);
       break;
     case ccd::Volume::Kind::OrientedBox: {
       json axes = json::array();
       for (int c = 0; c < 3; ++c)
         for (int k = 0; k < 3; ++k) axes.push_back(view_number(v.axes(k, c)));
-      j["c"] = vec(v.a);
+      j["c"] = view_vec(v.a);
       j["axes"] = std::move(axes);
-      j["half"] = vec(v.b);
+      j["half"] = view_vec(v.b);
       break;
     }
   }

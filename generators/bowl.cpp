@@ -17,7 +17,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kBowlParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -98,6 +98,6 @@ ccd::Scene generate_bowl(const ParameterSet& p) {
 
 extern const Generator kBowlGenerator = {
     "bowl", "balls bouncing inside a polygon bowl (static scenery: floor polygon and a triangle mesh of sides)",
-    kParameters, generate_bowl};
+    kBowlParameters, generate_bowl};
 
 }  // namespace ccdlab

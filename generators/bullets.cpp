@@ -10,7 +10,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kBulletsParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -69,7 +69,7 @@ ccd::Scene generate_bullets(const ParameterSet& p) {
 }  // namespace
 
 extern const Generator kBulletsGenerator = {
-    "bullets", "a slow field of spheres and small fast bullets aimed at field bodies (tunnelling)", kParameters,
+    "bullets", "a slow field of spheres and small fast bullets aimed at field bodies (tunnelling)", kBulletsParameters,
     generate_bullets};
 
 }  // namespace ccdlab

@@ -18,7 +18,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kFloorRampParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -99,7 +99,7 @@ ccd::Scene generate_floor_ramp(const ParameterSet& p) {
 }  // namespace
 
 extern const Generator kFloorRampGenerator = {
-    "floor_ramp", "balls rolling down ramps onto a floor (static scenery: ramps and a floor polygon)", kParameters,
+    "floor_ramp", "balls rolling down ramps onto a floor (static scenery: ramps and a floor polygon)", kFloorRampParameters,
     generate_floor_ramp};
 
 }  // namespace ccdlab

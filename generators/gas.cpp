@@ -8,7 +8,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kGasParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -47,7 +47,7 @@ ccd::Scene generate_gas(const ParameterSet& p) {
 }  // namespace
 
 extern const Generator kGasGenerator = {
-    "gas", "spheres in a box [0, L]^3, straight-line motion, elastic walls (or wrap=1: periodic), no gravity", kParameters,
+    "gas", "spheres in a box [0, L]^3, straight-line motion, elastic walls (or wrap=1: periodic), no gravity", kGasParameters,
     generate_gas};
 
 }  // namespace ccdlab

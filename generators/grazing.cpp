@@ -16,7 +16,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kGrazingParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -102,6 +102,6 @@ ccd::Scene generate_grazing(const ParameterSet& p) {
 extern const Generator kGrazingGenerator = {
     "grazing",
     "pairs passing at exactly tangent, one ulp beyond, shallow-crossing or near-miss distance, on or off a time grid",
-    kParameters, generate_grazing};
+    kGrazingParameters, generate_grazing};
 
 }  // namespace ccdlab

@@ -12,7 +12,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kLatticeParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -57,6 +57,6 @@ ccd::Scene generate_lattice(const ParameterSet& p) {
 
 extern const Generator kLatticeGenerator = {
     "lattice", "spheres on a cubic lattice exactly touching their neighbours (spacing 2r), optional axis velocities",
-    kParameters, generate_lattice};
+    kLatticeParameters, generate_lattice};
 
 }  // namespace ccdlab

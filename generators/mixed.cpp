@@ -11,7 +11,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kMixedParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -57,6 +57,6 @@ ccd::Scene generate_mixed(const ParameterSet& p) {
 
 extern const Generator kMixedGenerator = {
     "mixed", "moving spheres with log-uniform radii over orders of magnitude (default 0.01..10) in a box",
-    kParameters, generate_mixed};
+    kMixedParameters, generate_mixed};
 
 }  // namespace ccdlab

@@ -16,7 +16,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kPinballParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -72,7 +72,7 @@ ccd::Scene generate_pinball(const ParameterSet& p) {
 }  // namespace
 
 extern const Generator kPinballGenerator = {
-    "pinball", "fast small balls among many thin upright obstacles (static scenery): tunnelling", kParameters,
+    "pinball", "fast small balls among many thin upright obstacles (static scenery): tunnelling", kPinballParameters,
     generate_pinball};
 
 }  // namespace ccdlab

@@ -9,7 +9,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kRainParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -59,6 +59,6 @@ ccd::Scene generate_rain(const ParameterSet& p) {
 
 extern const Generator kRainGenerator = {
     "rain", "balls falling under gravity [0, -g, 0] in a tall column onto the floor of a box; elastic walls",
-    kParameters, generate_rain};
+    kRainParameters, generate_rain};
 
 }  // namespace ccdlab

@@ -25,7 +25,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kSpinningParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -123,14 +123,14 @@ ccd::Scene generate_rocks(const ParameterSet& p) { return generate(p, Kind::Rock
 }  // namespace
 
 extern const Generator kSticksGenerator = {
-    "sticks", "spinning capsules (long and thin) in a box, straight-line motion, elastic walls", kParameters,
+    "sticks", "spinning capsules (long and thin) in a box, straight-line motion, elastic walls", kSpinningParameters,
     generate_sticks};
 extern const Generator kPlatesGenerator = {
-    "plates", "spinning flat boxes in a box, straight-line motion, elastic walls", kParameters, generate_plates};
+    "plates", "spinning flat boxes in a box, straight-line motion, elastic walls", kSpinningParameters, generate_plates};
 extern const Generator kCratesGenerator = {
-    "crates", "spinning boxes in a box, straight-line motion, elastic walls", kParameters, generate_crates};
+    "crates", "spinning boxes in a box, straight-line motion, elastic walls", kSpinningParameters, generate_crates};
 extern const Generator kRocksGenerator = {
-    "rocks", "spinning random convex hulls in a box, straight-line motion, elastic walls", kParameters,
+    "rocks", "spinning random convex hulls in a box, straight-line motion, elastic walls", kSpinningParameters,
     generate_rocks};
 
 }  // namespace ccdlab

@@ -11,7 +11,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kSwarmParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -79,6 +79,6 @@ ccd::Scene generate_swarm(const ParameterSet& p) {
 
 extern const Generator kSwarmGenerator = {
     "swarm", "Hubbard's setting: bounded piecewise-constant random accelerations (|a| <= max_acceleration) in a box",
-    kParameters, generate_swarm};
+    kSwarmParameters, generate_swarm};
 
 }  // namespace ccdlab

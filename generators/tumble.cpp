@@ -19,7 +19,7 @@
 namespace ccdlab {
 namespace {
 
-constexpr ParameterSpec kParameters[] = {
+constexpr ParameterSpec kTumbleParameters[] = {
     kSeedParameter,
     kBodiesParameter,
     kHorizonParameter,
@@ -92,6 +92,6 @@ extern const Generator kTumbleGenerator = {
     "tumble",
     "spinning crates, sticks, plates and rocks falling onto a floor polygon and through a ramp (rigid bodies "
     "against static scenery)",
-    kParameters, generate_tumble};
+    kTumbleParameters, generate_tumble};
 
 }  // namespace ccdlab

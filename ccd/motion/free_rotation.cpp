@@ -1,4 +1,5 @@
 #include <ccd/motion/free_rotation.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_mode.h>
@@ -15,7 +16,6 @@ namespace ccd {
 namespace {
 
 using Mat3 = Eigen::Matrix3d;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kPi = std::numbers::pi;
 
 // GSL's special functions with the error handler off for the call (a domain error is

@@ -1,4 +1,5 @@
 #include <ccd/motion/trajectory.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <ccd/motion/piece_walk.hpp>
 
@@ -10,8 +11,6 @@
 
 namespace ccd {
 namespace {
-
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // First s in (0, limit] with c + v s + a s^2/2 == 0 (c = x - wall, formed exactly by the
 // caller) while moving towards the wall (dir = +1: the wall is above, the velocity at s

@@ -1,19 +1,14 @@
 #include <ccd/queries/aabb_sweep.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <algorithm>
 #include <limits>
 
 namespace ccd {
 
-namespace {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
-
-}  // namespace
-
 AabbSweepResult aabb_sweep(const Aabb& a, const Vec3& va, const Aabb& b, const Vec3& vb, double h) {
-  const AabbSweepResult none_degenerate{AabbSweepStatus::Degenerate, inf, -inf};
-  const AabbSweepResult none_miss{AabbSweepStatus::Miss, inf, -inf};
+  const AabbSweepResult none_degenerate{AabbSweepStatus::Degenerate, kInf, -kInf};
+  const AabbSweepResult none_miss{AabbSweepStatus::Miss, kInf, -kInf};
   if (!(h >= 0.0)) return none_degenerate;  // h = +inf is allowed
   // Written so that NaN fails every test.
   if (!((a.lo.array() <= a.hi.array()).all() && (b.lo.array() <= b.hi.array()).all())) return none_degenerate;

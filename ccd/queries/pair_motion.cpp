@@ -1,4 +1,5 @@
 #include <ccd/queries/pair_motion.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <algorithm>
 #include <array>
@@ -10,7 +11,6 @@ namespace ccd {
 namespace {
 
 constexpr double kU2 = kUnitRoundoff * kUnitRoundoff;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 }  // namespace
 

@@ -1,12 +1,11 @@
 #include <ccd/queries/polynomial_roots.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <algorithm>
 #include <gsl/gsl_poly.h>
 
 namespace ccd {
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Inserts x into the sorted breakpoint list (strictly inside (lo, hi), no duplicates).
 void add_break(MonotoneSplit& s, double x) {

@@ -1,4 +1,5 @@
 #include <ccd/queries/ray_plane.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 #include <ccd/queries/ray_polygon.hpp>
 
 #include <Eigen/Geometry>  // cross products
@@ -9,8 +10,6 @@
 namespace ccd {
 
 namespace {
-
-constexpr double inf = std::numeric_limits<double>::infinity();
 
 struct Point2 {
   double x;
@@ -49,7 +48,7 @@ int edge_sign(Point2 a, Point2 b) {
 RayPolygonResult ray_polygon(const Vec3& origin, const Vec3& direction, std::span<const Vec3> vertices,
                              double t_max) {
   const std::size_t n = vertices.size();
-  if (n < 3) return {RayPolygonStatus::Degenerate, inf};
+  if (n < 3) return {RayPolygonStatus::Degenerate, kInf};
   const Vec3& v0 = vertices[0];
   Vec3 normal = Vec3::Zero();
   for (std::size_t q = 1; q + 1 < n; ++q) normal += (vertices[q] - v0).cross(vertices[q + 1] - v0);
@@ -57,13 +56,13 @@ RayPolygonResult ray_polygon(const Vec3& origin, const Vec3& direction, std::spa
   const RayPlaneResult plane = ray_plane(origin - v0, direction, normal, 0.0, t_max);
   switch (plane.status) {
     case RayPlaneStatus::Degenerate:
-      return {RayPolygonStatus::Degenerate, inf};
+      return {RayPolygonStatus::Degenerate, kInf};
     case RayPlaneStatus::Parallel:
-      return {RayPolygonStatus::Parallel, inf};
+      return {RayPolygonStatus::Parallel, kInf};
     case RayPlaneStatus::InPlane:
       return {RayPolygonStatus::Coplanar, 0.0};
     case RayPlaneStatus::Miss:
-      return {RayPolygonStatus::Miss, inf};
+      return {RayPolygonStatus::Miss, kInf};
     case RayPlaneStatus::Hit:
       break;
   }
@@ -82,12 +81,12 @@ RayPolygonResult ray_polygon(const Vec3& origin, const Vec3& direction, std::spa
     const Point2 cur = f.project(vertices[q]);
     const int s = edge_sign(prev, cur);
     if (s != 0) {
-      if (seen != 0 && s != seen) return {RayPolygonStatus::Miss, inf};
+      if (seen != 0 && s != seen) return {RayPolygonStatus::Miss, kInf};
       seen = s;
     }
     prev = cur;
   }
-  if (seen == 0) return {RayPolygonStatus::Miss, inf};
+  if (seen == 0) return {RayPolygonStatus::Miss, kInf};
   return {RayPolygonStatus::Hit, plane.toi};
 }
 

@@ -1,4 +1,5 @@
 #include <ccd/queries/ray_sphere.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <Eigen/Geometry>  // cross product
 
@@ -10,9 +11,7 @@ namespace ccd {
 
 namespace {
 
-constexpr double inf = std::numeric_limits<double>::infinity();
-
-RaySphereResult no_contact(RaySphereStatus status) { return {status, inf, Vec3::Zero()}; }
+RaySphereResult no_contact(RaySphereStatus status) { return {status, kInf, Vec3::Zero()}; }
 
 }  // namespace
 
@@ -75,7 +74,7 @@ RaySphereResult ray_sphere(const Vec3& origin, const Vec3& direction, const Vec3
     n = pn > 0.0 ? Vec3(p / pn) : Vec3::Zero();
   }
   static constexpr RaySphereStatus outcome[2] = {RaySphereStatus::Miss, RaySphereStatus::Hit};
-  static constexpr double miss_toi[2] = {inf, 0.0};  // added to t: +inf on a miss
+  static constexpr double miss_toi[2] = {kInf, 0.0};  // added to t: +inf on a miss
   static constexpr double keep[2] = {0.0, 1.0};
   return {outcome[hit], t + miss_toi[hit], keep[hit] * n};
 }

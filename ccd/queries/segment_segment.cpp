@@ -1,12 +1,11 @@
 #include <ccd/queries/segment_segment.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <algorithm>
 #include <limits>
 
 namespace ccd {
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 double clamp01(double x) { return std::clamp(x, 0.0, 1.0); }
 

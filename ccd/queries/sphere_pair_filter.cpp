@@ -1,4 +1,5 @@
 #include <ccd/queries/sphere_pair_filter.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <xsimd/xsimd.hpp>
 
@@ -9,9 +10,6 @@ namespace ccd {
 namespace {
 
 using Batch = xsimd::batch<double>;
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The same element-wise operations on one double and on a SIMD batch, so that the
 // vector loop and its scalar tail give identical verdicts (IEEE operations, no

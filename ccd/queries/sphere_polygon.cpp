@@ -1,4 +1,5 @@
 #include <ccd/queries/sphere_polygon.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <ccd/geometry/double_double.hpp>
 #include <ccd/queries/certified_sublevel_set.hpp>
@@ -14,7 +15,6 @@ namespace ccd {
 namespace {
 
 constexpr double kU2 = kUnitRoundoff * kUnitRoundoff;
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kPad = 1.0 + 1e-6;
 
 // b - a exactly (the difference of two doubles is a double-double).

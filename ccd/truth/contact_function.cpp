@@ -1,4 +1,5 @@
 #include <ccd/truth/contact_function.hpp>
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,6 @@
 
 namespace ccd {
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Piece ib of b, moved to b's periodic image nearest to a at time t in a periodic scene
 // (with the edge condition the only image that can touch a: ccd/scene/periodic.hpp).

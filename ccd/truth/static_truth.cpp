@@ -1,5 +1,6 @@
 #include <ccd/truth/static_truth.hpp>
 
+#include <ccd/broad_phase/static_index.hpp>  // polygon_box
 #include <ccd/geometry/aabb.hpp>
 #include <ccd/queries/sphere_polygon.hpp>
 #include <ccd/motion/rigid_motion.hpp>
@@ -14,13 +15,6 @@
 
 namespace ccd {
 namespace {
-
-Aabb polygon_box(const StaticPolygon& poly) {
-  if (poly.vertices.empty()) return {};
-  Aabb box{poly.vertices.front(), poly.vertices.front()};
-  for (const Vec3& x : poly.vertices) box.merge({x, x});
-  return box;
-}
 
 // The piece's centre box over [u0, u1] grown by r and a margin that covers the rounding
 // of the positions evaluated from different expansion points (relative 1e-9 of the

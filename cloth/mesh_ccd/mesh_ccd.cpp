@@ -1,4 +1,5 @@
 #include "mesh_ccd.hpp"
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/cull/cullers.hpp>
@@ -20,7 +21,6 @@ namespace ccd::cloth {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Candidates per block handed to the narrow phase (one fixed buffer per thread).
 constexpr std::size_t kBlock = 4096;
 

@@ -1,4 +1,5 @@
 #include "mesh_sweep.hpp"
+#include <ccd/geometry/numeric_limits.hpp>
 
 #include <cloth/cull/primitive_boxes.hpp>
 #include <ccd/broad_phase/variance_axis.hpp>
@@ -15,7 +16,6 @@ namespace ccd::cloth {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr std::size_t kBuildBlock = 8192;
 
 using Item = MeshSweep::Item;

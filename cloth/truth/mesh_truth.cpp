@@ -12,16 +12,16 @@ namespace ccd::cloth {
 namespace {
 
 // A primitive's box over both states of the motion (exact: min and max of doubles).
-struct Item {
+struct SweepBox {
   Vec3 lo, hi;
   std::uint32_t index;
   std::uint8_t kind;  // 0 vertex, 1 edge, 2 triangle
 };
 
 template <std::size_t N>
-Item box_of(const std::array<std::uint32_t, N>& vertices, std::span<const Vec3> x0, std::span<const Vec3> x1,
+SweepBox box_of(const std::array<std::uint32_t, N>& vertices, std::span<const Vec3> x0, std::span<const Vec3> x1,
             std::uint32_t index, std::uint8_t kind) {
-  Item it{x0[vertices[0]], x0[vertices[0]], index, kind};
+  SweepBox it{x0[vertices[0]], x0[vertices[0]], index, kind};
   for (std::uint32_t v : vertices)
     for (const Vec3& p : {x0[v], x1[v]}) {
       it.lo = it.lo.cwiseMin(p);
@@ -74,18 +74,18 @@ std::vector<Candidate> contacts_among(const ClothMesh& mesh, std::span<const Can
 
 std::vector<Candidate> interval_contacts(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1,
                                          double thickness, MeshTruthCounts* counts) {
-  std::vector<Item> items;
+  std::vector<SweepBox> items;
   items.reserve(x0.size() + mesh.edges.size() + mesh.triangles.size());
   for (std::uint32_t v = 0; v < x0.size(); ++v) items.push_back(box_of(std::array<std::uint32_t, 1>{v}, x0, x1, v, 0));
   for (std::uint32_t e = 0; e < mesh.edges.size(); ++e) items.push_back(box_of(mesh.edges[e], x0, x1, e, 1));
   for (std::uint32_t t = 0; t < mesh.triangles.size(); ++t) items.push_back(box_of(mesh.triangles[t], x0, x1, t, 2));
-  std::sort(items.begin(), items.end(), [](const Item& a, const Item& b) { return a.lo.x() < b.lo.x(); });
+  std::sort(items.begin(), items.end(), [](const SweepBox& a, const SweepBox& b) { return a.lo.x() < b.lo.x(); });
   std::vector<Candidate> candidates;
   for (std::size_t i = 0; i < items.size(); ++i) {
-    const Item& a = items[i];
+    const SweepBox& a = items[i];
     // Sorted by lo.x: once lo_b.x - hi_a.x rounds above d it stays above for later b.
     for (std::size_t j = i + 1; j < items.size() && items[j].lo.x() - a.hi.x() <= thickness; ++j) {
-      const Item& b = items[j];
+      const SweepBox& b = items[j];
       Candidate c;
       if (a.kind == 1 && b.kind == 1)
         c = {PrimitivePair::EdgeEdge, std::min(a.index, b.index), std::max(a.index, b.index)};
