@@ -29,11 +29,16 @@ inline RecordContacts record_contacts(const nlohmann::json& r) {
   auto apart = [](std::uint64_t all, std::uint64_t a, std::uint64_t b) { return all >= a + b ? all - a - b : 0; };
   RecordContacts c;
   // The body pairs' fields bare, the scenery's with "static_".
-  for (const auto& [prefix, to_detect, missed] :
-       {std::tuple{"", &c.body_to_detect, &c.body_missed}, std::tuple{"static_", &c.scenery_to_detect, &c.scenery_missed}}) {
-    auto field = [&](const char* name) { return count((std::string(prefix) + name).c_str()); };
-    *to_detect = apart(field("events"), field("initial_contacts"), field("undecided"));
-    *missed = field("missed");
+  struct Twin {
+    const char* prefix;
+    std::uint64_t* to_detect;
+    std::uint64_t* missed;
+  };
+  for (const Twin& t : {Twin{"", &c.body_to_detect, &c.body_missed},
+                        Twin{"static_", &c.scenery_to_detect, &c.scenery_missed}}) {
+    auto field = [&](const char* name) { return count((std::string(t.prefix) + name).c_str()); };
+    *t.to_detect = apart(field("events"), field("initial_contacts"), field("undecided"));
+    *t.missed = field("missed");
   }
   return c;
 }
