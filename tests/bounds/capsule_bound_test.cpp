@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace bounds_capsule_bound_test {
+
 using ccd::Vec3;
 
 TEST_CASE("capsule contains the exact motion, reflections included", "[bounds][capsule][containment]") {
@@ -49,3 +51,5 @@ TEST_CASE("capsule of linear motion is the exact swept sphere", "[bounds][capsul
     CHECK(bound.test(0, 1).possible() == (offset < 1.0));
   }
 }
+
+}  // namespace bounds_capsule_bound_test

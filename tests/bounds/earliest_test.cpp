@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <optional>
 
+namespace bounds_earliest_test {
+
 using ccd::Vec3;
 
 // Scenes per case: sanitizer builds (about 10x slower) run a third.
@@ -173,3 +175,5 @@ TEST_CASE("instant bounds cannot be refreshed", "[bounds][windows]") {
     CHECK_THROWS_AS(bound->refresh({}, std::span<const std::uint32_t>(&body, 1), boxes), std::logic_error);
   }
 }
+
+}  // namespace bounds_earliest_test

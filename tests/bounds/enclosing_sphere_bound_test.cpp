@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace bounds_enclosing_sphere_bound_test {
+
 using ccd::Vec3;
 
 TEST_CASE("enclosing sphere contains bounded-acceleration motion", "[bounds][enclosing_sphere][containment]") {
@@ -47,3 +49,5 @@ TEST_CASE("enclosing sphere radius balances the horn's ends", "[bounds][enclosin
   CHECK(bound.shape(1).radius == Approx(1.5));
   CHECK_FALSE(bound.test(0, 1).possible());  // 10 - 1.25 = 8.75 > 3.75
 }
+
+}  // namespace bounds_enclosing_sphere_bound_test

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace bounds_frame_aabb_bound_test {
+
 TEST_CASE("frame_aabb reports every touching pair of dyadic and random shapes", "[bounds][frame_aabb][zero_miss]") {
   const ccd::Vec3 offset = GENERATE(ccd::Vec3(0, 0, 0), ccd::Vec3(1048576, -1048576, 1048576));
   ccd::FrameAabbBound bound;
@@ -36,3 +38,5 @@ TEST_CASE("frame_aabb's box lies inside the enclosing sphere's box", "[bounds][f
 TEST_CASE("frame_aabb through the pipeline: never fewer candidates than touching pairs", "[bounds][frame_aabb][pipeline]") {
   ccd::test::check_pipeline_superset("frame_aabb");
 }
+
+}  // namespace bounds_frame_aabb_bound_test

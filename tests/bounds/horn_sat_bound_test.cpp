@@ -4,6 +4,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace bounds_horn_sat_bound_test {
+
 using ccd::Vec3;
 
 TEST_CASE("horn_sat trapezoids contain bounded-acceleration motion", "[bounds][horn_sat][containment]") {
@@ -72,3 +74,5 @@ TEST_CASE("horn and horn_sat agree for axis-aligned velocities", "[bounds][horn_
   CHECK(accepted > 100);
   CHECK(agree >= static_cast<int>(s.size() * (s.size() - 1) / 2) - 20);  // only near-tangent pairs may differ
 }
+
+}  // namespace bounds_horn_sat_bound_test

@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace bounds_obb_bound_test {
+
 TEST_CASE("obb reports every touching pair of dyadic and random shapes", "[bounds][obb][zero_miss]") {
   const ccd::Vec3 offset = GENERATE(ccd::Vec3(0, 0, 0), ccd::Vec3(1048576, -1048576, 1048576));
   ccd::ObbBound bound;
@@ -54,3 +56,5 @@ TEST_CASE("obb is exact for crates", "[bounds][obb]") {
 TEST_CASE("obb through the pipeline: never fewer candidates than touching pairs", "[bounds][obb][pipeline]") {
   ccd::test::check_pipeline_superset("obb");
 }
+
+}  // namespace bounds_obb_bound_test

@@ -18,6 +18,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace bounds_obb_sat_bound_test {
+
 using ccd::Vec3;
 using ccd::test::body_at;
 using ccd::test::shaped;
@@ -186,3 +188,5 @@ TEST_CASE("obb_sat misses no contact of the certified rigid truth", "[bounds][ob
     }
   }
 }
+
+}  // namespace bounds_obb_sat_bound_test

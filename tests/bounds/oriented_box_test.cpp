@@ -10,6 +10,8 @@
 #include <cmath>
 #include <random>
 
+namespace bounds_oriented_box_test {
+
 using ccd::OrientedBox;
 using ccd::Vec3;
 
@@ -92,3 +94,5 @@ TEST_CASE("oriented box SAT agrees with the certified distance of random boxes",
   CHECK(overlapping > 2000);
   CHECK(separated > 2000);
 }
+
+}  // namespace bounds_oriented_box_test

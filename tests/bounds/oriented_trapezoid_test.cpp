@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+namespace bounds_oriented_trapezoid_test {
+
 using ccd::OrientedTrapezoid;
 using ccd::PairTest;
 using ccd::Vec3;
@@ -188,3 +190,5 @@ TEST_CASE("velocity_frame is orthonormal with v first", "[bounds][oriented_trape
     }
   }
 }
+
+}  // namespace bounds_oriented_trapezoid_test

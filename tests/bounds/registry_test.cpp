@@ -11,6 +11,8 @@
 #include <set>
 #include <stdexcept>
 
+namespace bounds_registry_test {
+
 using ccd::Vec3;
 
 // Random-case counts: Release runs >= 1e6 constructed pairs; sanitizer builds (about 10x
@@ -221,3 +223,5 @@ TEST_CASE("instant bounds reject separated pairs", "[bounds][registry]") {
   CHECK(aabb->test(0, 1).status == ccd::PairTest::Status::Possible);
   CHECK(aabb->test(0, 1).earliest == 0.0);  // the sample time: an instant bound carries no timing
 }
+
+}  // namespace bounds_registry_test

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+namespace bounds_shape_boxes_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -79,3 +81,5 @@ TEST_CASE("shape boxes hold the shape and are tight", "[bounds][obb]") {
     }
   }
 }
+
+}  // namespace bounds_shape_boxes_test

@@ -15,6 +15,8 @@
 #include <random>
 #include <vector>
 
+namespace bounds_start_piece_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -142,3 +144,5 @@ TEST_CASE("bounds from the cursor's pieces: random gases", "[bounds][start_piece
     CHECK(possible > 0);
   }
 }
+
+}  // namespace bounds_start_piece_test

@@ -17,6 +17,8 @@
 #include <random>
 #include <string>
 
+namespace bounds_static_test_test {
+
 using namespace ccd;
 using ccd::test::make_polygon;
 using ccd::test::square_z;
@@ -193,3 +195,5 @@ TEST_CASE("Bound::test_static: random steps, contacts certified at sample times"
   }
   CHECK(contacts > 20);
 }
+
+}  // namespace bounds_static_test_test

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+namespace bounds_trapezoid_test {
+
 using ccd::Trapezoid;
 using ccd::PairTest;
 using ccd::Vec3;
@@ -265,3 +267,5 @@ TEST_CASE("trapezoid_sequence_overlap agrees with dense sampling over different 
   CHECK(possible > 300);
   CHECK(disjoint > 300);
 }
+
+}  // namespace bounds_trapezoid_test

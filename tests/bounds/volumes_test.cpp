@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace bounds_volumes_test {
+
 using ccd::Vec3;
 using ccd::Volume;
 
@@ -183,3 +185,5 @@ TEST_CASE("a volume's hull and containment", "[bounds][volumes]") {
   CHECK(ball.contains(Vec3(1.5, 1, 1), 0.5, 0.0));
   CHECK_FALSE(ball.contains(Vec3(1.5, 1, 1), 0.5 + 1.0 / 1024, 0.0));
 }
+
+}  // namespace bounds_volumes_test

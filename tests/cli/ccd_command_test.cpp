@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+namespace cli_ccd_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -67,3 +69,5 @@ TEST_CASE("ccdlab ccd rejects bad input with exit 2 and one line", "[cloth][cli]
   CHECK(run_ccd((dir / "missing.csv") + " --kind vf", dir, nullptr, &err) == 2);
   CHECK(run_ccd(data("hard_vf.csv") + " --kind vf -o " + data("hard_vf.csv"), dir, nullptr, &err) == 2);
 }
+
+}  // namespace cli_ccd_command_test

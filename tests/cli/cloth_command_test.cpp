@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+namespace cli_cloth_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -49,3 +51,5 @@ TEST_CASE("ccdlab cloth writes the frames of a built-in scene and of a scene fil
   CHECK(run_cloth("drape --n 3 -o " + (dir / "h.json"), dir) == 2);
   CHECK(run_cloth("drape", dir) == 2);
 }
+
+}  // namespace cli_cloth_command_test

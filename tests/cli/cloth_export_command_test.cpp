@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace cli_cloth_export_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -194,3 +196,5 @@ TEST_CASE("ccdlab cloth queries and frames: bad input exits 2 naming the option,
   // Existing usage keeps working.
   CHECK(run_ccdlab("cloth pile --n 6 --steps 2 -o " + (dir / "f.json"), dir) == 0);
 }
+
+}  // namespace cli_cloth_export_command_test

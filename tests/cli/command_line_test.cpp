@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+namespace cli_command_line_test {
+
 using ccdlab::CommandLine;
 using ccdlab::UsageError;
 using ccdlab::test::Folder;
@@ -266,3 +268,5 @@ TEST_CASE("numbers given to options are checked, naming the option", "[cli][comm
   }
   CHECK_FALSE(std::filesystem::exists(dir / "out"));
 }
+
+}  // namespace cli_command_line_test

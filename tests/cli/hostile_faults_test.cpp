@@ -17,6 +17,8 @@
 #include <thread>
 #include <vector>
 
+namespace cli_hostile_faults_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 using ccdlab::test::Folder;
@@ -241,3 +243,5 @@ TEST_CASE("two runs writing one output at once leave one whole file", "[hostile]
     }
   }
 }
+
+}  // namespace cli_hostile_faults_test

@@ -13,6 +13,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace cli_hostile_input_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -345,3 +347,5 @@ TEST_CASE("silent oddities are errors or are normalised", "[hostile][cli]") {
   CHECK_FALSE(fs::exists(out));
   CHECK(dir.temporaries() == 0);
 }
+
+}  // namespace cli_hostile_input_test

@@ -18,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace cli_hostile_outputs_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 using ccdlab::test::Folder;
@@ -442,3 +444,5 @@ TEST_CASE("SIGTERM and SIGINT stop a command within a second, writing nothing", 
     }
   }
 }
+
+}  // namespace cli_hostile_outputs_test

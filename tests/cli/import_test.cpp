@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace cli_import_test {
+
 using ccdlab::test::Folder;
 using ccdlab::test::run_ccdlab;
 using nlohmann::json;
@@ -121,3 +123,5 @@ TEST_CASE("ccdlab import: bad input exits 2 naming the line and column, writes n
   CHECK(run_ccdlab("import --help", dir, &out) == 0);
   CHECK(out.find("usage: ccdlab import FRAMES.csv -o SCENE.json") != std::string::npos);
 }
+
+}  // namespace cli_import_test

@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+namespace cli_mesh_ccd_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 using ccdlab::test::Folder;
@@ -163,3 +165,5 @@ TEST_CASE("ccdlab mesh-frames writes every generator and a cloth run's states", 
   CHECK(run("mesh-frames tori --faces 3 -o " + (dir / "x"), dir) == 2);
   CHECK_FALSE(fs::exists(dir / "x"));
 }
+
+}  // namespace cli_mesh_ccd_command_test

@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+namespace cli_pack_test {
+
 using ccdlab::test::Folder;
 using ccdlab::test::run_ccdlab;
 using ccdlab::test::slurp;
@@ -75,3 +77,5 @@ TEST_CASE("ccdlab pack refuses what the binary format does not carry, and bad us
   CHECK(run_ccdlab("pack " + dir / "missing.json" + " -o " + dir / "m.ccds", dir) == 2);
   CHECK(run_ccdlab("pack --frobnicate", dir) == 2);
 }
+
+}  // namespace cli_pack_test

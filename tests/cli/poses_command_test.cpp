@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+namespace cli_poses_command_test {
+
 using ccdlab::test::Folder;
 using ccdlab::test::run_ccdlab;
 using ccd::Vec3;
@@ -107,3 +109,5 @@ TEST_CASE("ccdlab poses: a bad scene names its field, usage errors", "[cli][pose
   CHECK(err.find("missing --times") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "p.csv"));
 }
+
+}  // namespace cli_poses_command_test

@@ -8,6 +8,8 @@
 #include <string>
 #include <sys/wait.h>
 
+namespace cli_run_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -246,3 +248,5 @@ TEST_CASE("ccdlab run --list-missed lists every miss, the summary goes beside th
   CHECK(summary.find("| capsule/sap \\* |") != std::string::npos);
   CHECK(summary.find("missed @ 10 Hz") != std::string::npos);
 }
+
+}  // namespace cli_run_command_test

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+namespace cli_run_scenery_test {
+
 using ccdlab::test::Folder;
 using ccdlab::test::run_ccdlab;
 using ccdlab::test::slurp;
@@ -85,3 +87,5 @@ TEST_CASE("ccdlab run: floor contacts count in the summary and the missed list",
     }
   }
 }
+
+}  // namespace cli_run_scenery_test

@@ -12,6 +12,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace cli_scene_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -142,3 +144,5 @@ TEST_CASE("data/scenes/default.json is the gas scene of 2000 bodies, seed 7, hor
   const ccd::Scene expected = ccdlab::generate_scene("gas", json{{"bodies", 2000}, {"seed", 7}, {"horizon", 1}, {"speed_max", 40}});
   CHECK(ccd::scene_to_json(stored) == ccd::scene_to_json(expected));
 }
+
+}  // namespace cli_scene_command_test

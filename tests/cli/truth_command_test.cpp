@@ -14,6 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+namespace cli_truth_command_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -216,3 +218,5 @@ TEST_CASE("ccdlab truth on a scene with scenery writes static events, bad scener
   CHECK(std::count(b.err.begin(), b.err.end(), '\n') == 1);
   CHECK_FALSE(fs::exists(bad_out));
 }
+
+}  // namespace cli_truth_command_test

@@ -15,6 +15,8 @@
 #include <cmath>
 #include <fstream>
 
+namespace cli_view_command_test {
+
 using nlohmann::json;
 using ccdlab::test::Folder;
 using ccdlab::test::run_ccdlab;
@@ -226,3 +228,5 @@ TEST_CASE("ccdlab view: cloth frames become the page's mesh", "[view][cli]") {
   CHECK(page.find("\"kind\":\"cloth\"") != std::string::npos);
   CHECK(page.find("\"nx\":4") != std::string::npos);
 }
+
+}  // namespace cli_view_command_test

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace docs_json_examples_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -138,3 +140,5 @@ TEST_CASE("every shipped scene and experiment file is accepted", "[docs]") {
   CHECK(cloth >= 2);
   CHECK(files >= 20);
 }
+
+}  // namespace docs_json_examples_test

@@ -12,6 +12,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace experiments_all_methods_test {
+
 namespace {
 
 struct Case {
@@ -58,3 +60,5 @@ TEST_CASE("every method composes and keeps its guarantee on small scenes", "[run
     if (!r.continuous && std::string(c.generator) == "bullets") CHECK(r.bodies.missed > 0);
   }
 }
+
+}  // namespace experiments_all_methods_test

@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 
+namespace experiments_cloth_experiment_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 using ccdlab::test::Folder;
@@ -120,3 +122,5 @@ TEST_CASE("ccdlab run on a cloth experiment: records, summary, and the truth com
   REQUIRE(ccdlab::test::run_ccdlab("run " + (dir / "e.json") + " --shard 1/2", dir, nullptr, &err) == 2);
   CHECK(err.find("apply to sphere and rigid experiments only") != std::string::npos);
 }
+
+}  // namespace experiments_cloth_experiment_test

@@ -19,6 +19,8 @@
 #include <limits>
 #include <vector>
 
+namespace experiments_exact_scenes_test {
+
 using ccd::Body;
 using ccd::Vec3;
 using ccd::test::body;
@@ -165,3 +167,5 @@ TEST_CASE("exact scenes: conservative methods miss nothing, every self-check is 
     }
   }
 }
+
+}  // namespace experiments_exact_scenes_test

@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace experiments_experiment_test {
+
 using ccdlab::experiment_from_json;
 using nlohmann::json;
 
@@ -100,3 +102,5 @@ TEST_CASE("an unknown field in an experiment is an error with the nearest known 
     CHECK_FALSE(e.scene_generator.contains("comment"));
   }
 }
+
+}  // namespace experiments_experiment_test

@@ -11,6 +11,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace experiments_free_spin_methods_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -153,3 +155,5 @@ TEST_CASE("a free tumble differs from the constant spin it starts with", "[runne
              std::fabs(ra.events[k].enter - rb.events[k].enter) > 1e-3;
   CHECK(differ);
 }
+
+}  // namespace experiments_free_spin_methods_test

@@ -15,6 +15,8 @@
 #include <unistd.h>
 #include <vector>
 
+namespace experiments_merge_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 using ccdlab::ResultsShard;
@@ -182,3 +184,5 @@ TEST_CASE("merge refuses shards of different scene contents under the same file 
   // Nor over one of its inputs.
   CHECK(run_ccdlab("merge " + s.shards[0].file + " -o " + s.shards[0].file) == 2);
 }
+
+}  // namespace experiments_merge_test

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+namespace experiments_method_test {
+
 TEST_CASE("method names compose a bound, a broad phase and a scheduler", "[methods][scheduler]") {
   SECTION("no scheduler: fixed steps, and the options say nothing more than before") {
     const ccdlab::MethodSpec m = ccdlab::parse_method("horn:4/grid");
@@ -98,3 +100,5 @@ TEST_CASE("a bad method names the part that is wrong", "[methods]") {
     }
   }
 }
+
+}  // namespace experiments_method_test

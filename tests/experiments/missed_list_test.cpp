@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+namespace experiments_missed_list_test {
+
 using nlohmann::json;
 
 namespace {
@@ -56,3 +58,5 @@ TEST_CASE("missed list: at most a screenful, then a count of the rest", "[summar
   r["records"][0].erase("missed_events");
   CHECK(ccdlab::missed_list_text(r).find("(the record lists none: run with --list-missed)") != std::string::npos);
 }
+
+}  // namespace experiments_missed_list_test

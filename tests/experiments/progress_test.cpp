@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+namespace experiments_progress_test {
+
 TEST_CASE("progress: durations for the time left", "[progress]") {
   using ccdlab::Progress;
   CHECK(Progress::duration(0.0) == "0s");
@@ -30,3 +32,5 @@ TEST_CASE("progress: the observer sees every job, quiet or not, up to the total"
   const std::vector<std::pair<std::size_t, std::size_t>> want{{0, 3}, {1, 3}, {2, 3}, {3, 3}};
   CHECK(seen == want);
 }
+
+}  // namespace experiments_progress_test

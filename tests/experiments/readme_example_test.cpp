@@ -36,6 +36,8 @@ int main() {
 // ---- README example ends ----
 #undef main
 
+namespace experiments_readme_example_test {
+
 TEST_CASE("the README's library example runs and agrees with the ground truth", "[readme]") {
   std::ostringstream example_out;
   std::streambuf* saved = std::cout.rdbuf(example_out.rdbuf());
@@ -80,3 +82,5 @@ TEST_CASE("the README shows the example this file compiles", "[readme]") {
   const std::string readme = slurp(CCDLAB_SOURCE_DIR "/README.md");
   CHECK(readme.find("```cpp\n" + expected + "```\n") != std::string::npos);
 }
+
+}  // namespace experiments_readme_example_test

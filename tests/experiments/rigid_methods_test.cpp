@@ -10,6 +10,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace experiments_rigid_methods_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -132,3 +134,5 @@ TEST_CASE("every method on rigid scenes: zero misses for conservative methods, s
   // The spin is fast against dt: sampling tunnels, or the scene does not test rotation.
   if (!mixed) CHECK(sampling_missed);
 }
+
+}  // namespace experiments_rigid_methods_test

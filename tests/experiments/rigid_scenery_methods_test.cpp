@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
+namespace experiments_rigid_scenery_methods_test {
+
 namespace {
 
 struct Checked {
@@ -94,3 +96,5 @@ TEST_CASE("conservative methods miss no rigid body-static event in the tumble sc
   const Checked c = check_methods(scene, 0.0625, "tumble", false);
   CHECK(c.detected > 0);
 }
+
+}  // namespace experiments_rigid_scenery_methods_test

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 
+namespace experiments_run_cloth_experiment_test {
+
 using namespace ccdlab;
 using ccd::Vec3;
 
@@ -88,3 +90,5 @@ TEST_CASE("cloth jobs: false positives and repeats", "[cloth][experiments]") {
   CHECK(thrice.counts_stable);
   CHECK(thrice.candidates == run_cloth_method(m, brute, true, 2).candidates);
 }
+
+}  // namespace experiments_run_cloth_experiment_test

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+namespace experiments_runner_test {
+
 using ccd::Vec3;
 using ccdlab::parse_method;
 using ccdlab::run_method;
@@ -274,3 +276,5 @@ TEST_CASE("records carry the CPU time of the method's work beside its wall time"
     CHECK(j["cpu_seconds_per_simulated_second"] == r.cpu_seconds_per_simulated_second);
   }
 }
+
+}  // namespace experiments_runner_test

@@ -21,6 +21,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace experiments_scenery_methods_test {
+
 namespace {
 
 using ccd::Body;
@@ -163,3 +165,5 @@ TEST_CASE("@earliest runs on a scene with scenery and refuses the kinematic opti
     CHECK(std::string(err.what()).find("kinematic") != std::string::npos);
   }
 }
+
+}  // namespace experiments_scenery_methods_test

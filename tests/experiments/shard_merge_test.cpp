@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+namespace experiments_shard_merge_test {
+
 using nlohmann::json;
 
 namespace {
@@ -86,3 +88,5 @@ TEST_CASE("shards merged in any order equal the whole run, for any shard count",
     }
   }
 }
+
+}  // namespace experiments_shard_merge_test

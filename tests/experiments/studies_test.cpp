@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+namespace experiments_studies_test {
+
 using nlohmann::json;
 
 namespace {
@@ -389,3 +391,5 @@ TEST_CASE("study thin-obstacles: discrete methods pass through thin plates, cons
     CHECK(r.scenery.narrow_calls >= r.scenery.confirmed);
   }
 }
+
+}  // namespace experiments_studies_test

@@ -10,6 +10,8 @@
 #include <tuple>
 #include <vector>
 
+namespace experiments_summary_test {
+
 using nlohmann::json;
 
 namespace {
@@ -186,3 +188,5 @@ TEST_CASE("summary path: beside the results file", "[summary]") {
   CHECK(ccdlab::summary_path("results/default.json") == "results/default.summary.md");
   CHECK(ccdlab::summary_path("out") == "out.summary.md");
 }
+
+}  // namespace experiments_summary_test

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+namespace experiments_undecided_runner_test {
+
 using nlohmann::json;
 
 namespace {
@@ -77,3 +79,5 @@ TEST_CASE("the plate 5e-7 from two resting balls: no event, nothing undecided", 
   }
   CHECK(ccdlab::summary_text(results).find("undecided") == std::string::npos);
 }
+
+}  // namespace experiments_undecided_runner_test

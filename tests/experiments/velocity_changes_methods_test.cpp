@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+namespace experiments_velocity_changes_methods_test {
+
 using ccd::Body;
 using ccd::Vec3;
 using ccd::test::body;
@@ -167,3 +169,5 @@ TEST_CASE("velocity changes: a Bounded bound misses a jump inside its step (docu
     CHECK(r.bodies.detected == 1);
   }
 }
+
+}  // namespace experiments_velocity_changes_methods_test

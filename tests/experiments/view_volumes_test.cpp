@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+namespace experiments_view_volumes_test {
+
 using nlohmann::json;
 
 namespace {
@@ -193,3 +195,5 @@ TEST_CASE("view volumes: a method this build does not know gets none, with the r
   CHECK(runs[0]["volumes"]["coverage"] == "none");
   CHECK(runs[0]["volumes"]["reason"].get<std::string>().find("warp_drive") != std::string::npos);
 }
+
+}  // namespace experiments_view_volumes_test

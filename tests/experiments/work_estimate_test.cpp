@@ -16,6 +16,8 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
+namespace experiments_work_estimate_test {
+
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -114,3 +116,5 @@ TEST_CASE("every scene and experiment shipped in data/ passes the work estimates
   CHECK(experiments >= 40);
   CHECK(shaped >= 10);
 }
+
+}  // namespace experiments_work_estimate_test

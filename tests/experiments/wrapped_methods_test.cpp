@@ -16,6 +16,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace experiments_wrapped_methods_test {
+
 namespace {
 
 void check_methods(const ccd::Scene& scene, double dt, const std::string& what, const std::vector<std::string>& names) {
@@ -104,3 +106,5 @@ TEST_CASE("an @earliest experiment on a scene that wraps around loads", "[runner
   const ccd::Scene scene = ccdlab::load_experiment_scene(e, "e.json");
   CHECK(scene.wraps());
 }
+
+}  // namespace experiments_wrapped_methods_test

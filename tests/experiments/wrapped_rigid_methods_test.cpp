@@ -17,6 +17,8 @@
 
 #include <algorithm>
 
+namespace experiments_wrapped_rigid_methods_test {
+
 namespace {
 
 void check_every_method(const ccd::Scene& scene, double dt, const std::string& what) {
@@ -85,3 +87,5 @@ TEST_CASE("@earliest refuses shaped bodies in a scene that wraps around, naming 
   e.methods = {ccdlab::parse_method("capsule/grid")};
   CHECK(ccdlab::load_experiment_scene(e, "e.json").wraps());
 }
+
+}  // namespace experiments_wrapped_rigid_methods_test

@@ -12,6 +12,8 @@
 #include <set>
 #include <string>
 
+namespace generators_binary_round_trip_test {
+
 using nlohmann::json;
 
 TEST_CASE("every sphere generator's scene round-trips through the binary format", "[generators][binary]") {
@@ -43,3 +45,5 @@ TEST_CASE("every sphere generator's scene round-trips through the binary format"
   CHECK(packed == std::set<std::string>{"gas", "rain", "bullets", "swarm", "lattice", "mixed", "grazing"});
   CHECK(refused == std::set<std::string>{"sticks", "plates", "crates", "rocks", "floor_ramp", "bowl", "pinball", "tumble"});
 }
+
+}  // namespace generators_binary_round_trip_test

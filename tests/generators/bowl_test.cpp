@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_bowl_test {
+
 using ccdlab::testing::make;
 using nlohmann::json;
 
@@ -27,3 +29,5 @@ TEST_CASE("bowl: a polygon floor and a triangle mesh of sides, balls inside", "[
   for (std::uint32_t i = 0; i < s.bodies.size(); ++i)
     CHECK(std::any_of(ev.begin(), ev.end(), [&](const ccd::StaticEvent& e) { return e.body == i && e.polygon == 0; }));
 }
+
+}  // namespace generators_bowl_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <limits>
 
+namespace generators_bullets_test {
+
 using ccdlab::testing::make;
 
 namespace {
@@ -41,3 +43,5 @@ TEST_CASE("bullets: small fast spheres aimed at field bodies", "[generators]") {
     for (const ccd::Body& b : none.bodies) CHECK(b.radius >= 0.5);
   }
 }
+
+}  // namespace generators_bullets_test

@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_floor_ramp_test {
+
 using ccdlab::testing::make;
 using nlohmann::json;
 
@@ -37,3 +39,5 @@ TEST_CASE("floor_ramp: balls slide down their ramps pressed into them, then boun
     }));
   }
 }
+
+}  // namespace generators_floor_ramp_test

@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+namespace generators_gas_test {
+
 using ccdlab::testing::make;
 using nlohmann::json;
 
@@ -51,3 +53,5 @@ TEST_CASE("gas: radii, speeds and box follow the parameters", "[generators]") {
     for (const ccd::Body& b : z.bodies) CHECK(b.velocity.isZero(0.0));
   }
 }
+
+}  // namespace generators_gas_test

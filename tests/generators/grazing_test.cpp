@@ -8,6 +8,8 @@
 #include <limits>
 #include <map>
 
+namespace generators_grazing_test {
+
 using ccdlab::testing::make;
 
 namespace {
@@ -94,3 +96,5 @@ TEST_CASE("grazing: radius, speed and tick must be powers of two, tick <= horizo
   CHECK_THROWS_WITH(make("grazing", {{"tick", 1}}), "tick (1) must be <= horizon / 2 (0.5)");
   CHECK_NOTHROW(make("grazing", {{"tick", 0.5}, {"bodies", 8}}));
 }
+
+}  // namespace generators_grazing_test

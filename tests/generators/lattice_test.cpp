@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_lattice_test {
+
 using ccdlab::testing::make;
 
 TEST_CASE("lattice: neighbours touch exactly, nobody overlaps", "[generators]") {
@@ -51,3 +53,5 @@ TEST_CASE("lattice: the radius must be a power of two", "[generators]") {
                     "parameter 'radius': must be a power of two, so that the lattice is exact (got 0.3)");
   CHECK_NOTHROW(make("lattice", {{"bodies", 9}, {"radius", 0.0625}}));
 }
+
+}  // namespace generators_lattice_test

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_mixed_test {
+
 using ccdlab::testing::make;
 
 TEST_CASE("mixed: radii span three orders of magnitude, log-uniformly", "[generators]") {
@@ -27,3 +29,5 @@ TEST_CASE("mixed: radii span three orders of magnitude, log-uniformly", "[genera
     for (int count : decade) CHECK(std::abs(count - 1000) < 200);
   }
 }
+
+}  // namespace generators_mixed_test

@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_pinball_test {
+
 using ccdlab::testing::make;
 using nlohmann::json;
 
@@ -24,3 +26,5 @@ TEST_CASE("pinball: thin obstacles, fast balls that cross them", "[generators][s
   // step of 1/60 s moves a ball 0.33 m, over three times the largest diameter.
   CHECK(ev.size() >= 40);
 }
+
+}  // namespace generators_pinball_test

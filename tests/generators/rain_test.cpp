@@ -5,6 +5,8 @@
 #include <limits>
 #include <numbers>
 
+namespace generators_rain_test {
+
 using ccdlab::testing::make;
 
 TEST_CASE("rain: balls fall under gravity in a tall column", "[generators]") {
@@ -32,3 +34,5 @@ TEST_CASE("rain: balls fall under gravity in a tall column", "[generators]") {
     CHECK(make("rain", {{"bodies", 10}, {"gravity", 0.0}}).motion_kind() == ccd::MotionKind::Linear);
   }
 }
+
+}  // namespace generators_rain_test

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+namespace generators_registry_test {
+
 using ccdlab::testing::make;
 using ccdlab::testing::same_scene;
 using nlohmann::json;
@@ -161,3 +163,5 @@ TEST_CASE("docs/generators.md documents every generator's parameters and default
     }
   }
 }
+
+}  // namespace generators_registry_test

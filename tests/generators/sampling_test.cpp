@@ -6,6 +6,8 @@
 #include <numbers>
 #include <random>
 
+namespace generators_sampling_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -91,3 +93,5 @@ TEST_CASE("box side from the volume fraction", "[generators]") {
     CHECK(ccdlab::cube_side(1, 1.25, 0.49, 1.5) == 6.0);
   }
 }
+
+}  // namespace generators_sampling_test

@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace generators_spinning_test {
+
 using ccdlab::testing::make;
 using nlohmann::json;
 
@@ -91,3 +93,5 @@ TEST_CASE("spinning generators: wrap = 1 loops the box around, the draws unchang
     }
   }
 }
+
+}  // namespace generators_spinning_test

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace generators_swarm_test {
+
 using ccdlab::testing::make;
 
 TEST_CASE("swarm: accelerations bounded by max_acceleration, changing at known times", "[generators]") {
@@ -42,3 +44,5 @@ TEST_CASE("swarm: accelerations bounded by max_acceleration, changing at known t
     CHECK(z.max_acceleration() == 0.0);
   }
 }
+
+}  // namespace generators_swarm_test

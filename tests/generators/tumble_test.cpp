@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace generators_tumble_test {
+
 using ccdlab::testing::make;
 
 TEST_CASE("tumble: four shapes in turn above a floor polygon and a ramp", "[generators][scenery][rigid]") {
@@ -35,3 +37,5 @@ TEST_CASE("tumble: four shapes in turn above a floor polygon and a ramp", "[gene
   const ccd::RigidStaticTruthResult r = ccd::compute_rigid_static_truth(motion, s.scenery);
   CHECK(!r.events.empty());
 }
+
+}  // namespace generators_tumble_test

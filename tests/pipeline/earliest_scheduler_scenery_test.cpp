@@ -31,6 +31,8 @@
 #include <string>
 #include <vector>
 
+namespace pipeline_earliest_scheduler_scenery_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -324,3 +326,5 @@ TEST_CASE("the earliest scheduler refuses scenery in a scene that wraps around",
   std::vector<ccd::ScheduledContact> contacts;
   CHECK_THROWS_AS(sched.run(traj, s.horizon, 0.0, s.box, contacts), std::invalid_argument);
 }
+
+}  // namespace pipeline_earliest_scheduler_scenery_test

@@ -22,6 +22,8 @@
 #include <string>
 #include <tuple>
 
+namespace pipeline_earliest_scheduler_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -572,3 +574,5 @@ TEST_CASE("checks run in rounds as they are made find what checks queued at thei
   }
   CHECK(contacts_total > 0);
 }
+
+}  // namespace pipeline_earliest_scheduler_test

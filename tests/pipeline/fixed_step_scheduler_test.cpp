@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+namespace pipeline_fixed_step_scheduler_test {
+
 namespace {
 
 struct Small {
@@ -209,3 +211,5 @@ TEST_CASE("fixed_step_count: samples for discrete methods, steps starting before
   CHECK(ccd::fixed_step_count(0.5, 0.3, false) == 2);   // 0, 0.3
   CHECK(ccd::fixed_step_count(1.0, 0.0, true) == 0);
 }
+
+}  // namespace pipeline_fixed_step_scheduler_test

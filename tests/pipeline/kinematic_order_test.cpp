@@ -8,6 +8,8 @@
 #include <map>
 #include <vector>
 
+namespace pipeline_kinematic_order_test {
+
 namespace {
 
 ccd::ContactResult hit(double toi, double error) {
@@ -48,3 +50,5 @@ TEST_CASE("kinematic_visit: certain at toi + toi_error", "[pipeline][scenery]") 
     CHECK(solved == std::vector<std::uint32_t>{0, 1, 2});
   }
 }
+
+}  // namespace pipeline_kinematic_order_test

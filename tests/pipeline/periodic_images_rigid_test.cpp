@@ -19,6 +19,8 @@
 #include <memory>
 #include <set>
 
+namespace pipeline_periodic_images_rigid_test {
+
 namespace {
 
 struct World {
@@ -138,3 +140,5 @@ TEST_CASE("every bound x every broad phase on a wrapped rigid scene: brute-force
   CHECK(images > 0);
   CHECK(certified > 0);
 }
+
+}  // namespace pipeline_periodic_images_rigid_test

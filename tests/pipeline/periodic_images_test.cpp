@@ -15,6 +15,8 @@
 #include <set>
 #include <vector>
 
+namespace pipeline_periodic_images_test {
+
 namespace {
 
 std::set<ccd::BodyPair> as_set(const std::vector<ccd::BodyPair>& v) { return {v.begin(), v.end()}; }
@@ -87,3 +89,5 @@ TEST_CASE("the step pipeline on a wrapped scene equals brute force and the perio
   CHECK(touching_total >= 10);
   CHECK(across_seam >= 1);  // the scene tests the seam
 }
+
+}  // namespace pipeline_periodic_images_test

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 
+namespace pipeline_scheduler_images_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -128,3 +130,5 @@ TEST_CASE("scheduler slots: homes, unwrapped paths and exact images", "[pipeline
     CHECK(moved.empty());
   }
 }
+
+}  // namespace pipeline_scheduler_images_test

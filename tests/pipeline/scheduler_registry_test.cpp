@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+namespace pipeline_scheduler_registry_test {
+
 namespace {
 
 // The message of the std::invalid_argument `f` throws ("" when it throws none).
@@ -172,3 +174,5 @@ TEST_CASE("the registry refuses bad scheduler options and parts, naming them", "
   CHECK(mentions(refusal([&] { ccd::parse_scheduler("fixed").make({&capsule, nullptr, 0.1}); }), "broad phase"));
   CHECK(refusal([&] { ccd::parse_scheduler("fixed").make({&aabb, &grid, 0.1}); }).empty());  // samples
 }
+
+}  // namespace pipeline_scheduler_registry_test

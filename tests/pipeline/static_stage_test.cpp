@@ -20,6 +20,8 @@
 #include <random>
 #include <stdexcept>
 
+namespace pipeline_static_stage_test {
+
 using namespace ccd;
 
 
@@ -148,3 +150,5 @@ TEST_CASE("static stages: the narrow phase is the table's polygon column", "[pip
   CHECK(passed > 0);
   CHECK(refused);
 }
+
+}  // namespace pipeline_static_stage_test

@@ -19,6 +19,8 @@
 #include <set>
 #include <vector>
 
+namespace pipeline_step_pipeline_test {
+
 namespace {
 
 std::set<ccd::BodyPair> as_set(const std::vector<ccd::BodyPair>& v) { return {v.begin(), v.end()}; }
@@ -136,3 +138,5 @@ TEST_CASE("the narrow phase started at earliest finds the same contacts", "[pipe
   CHECK(contacts > 20);
   CHECK(later_starts > 100);  // the option did move narrow-phase starts
 }
+
+}  // namespace pipeline_step_pipeline_test

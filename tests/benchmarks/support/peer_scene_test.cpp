@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <string>
 
+namespace benchmarks_support_peer_scene_test {
+
 namespace {
 
 const ccdlab::bench::PeerSceneReference& reference(std::size_t n) {
@@ -83,3 +85,5 @@ TEST_CASE("N = 10000: frame 0 / 22 pairs match the published table", "[broad_pha
     CHECK(ccdlab::bench::peer_pair_checksum(pairs) == ref.checksum_22);
   }
 }
+
+}  // namespace benchmarks_support_peer_scene_test

@@ -10,6 +10,8 @@
 #include <set>
 #include <vector>
 
+namespace ccd_broad_phase_broad_phase_update_test {
+
 using ccd::Aabb;
 using ccd::BodyPair;
 using ccd::Vec3;
@@ -110,3 +112,5 @@ TEST_CASE("every broad phase's update stays exact over a long run of small batch
     }
   }
 }
+
+}  // namespace ccd_broad_phase_broad_phase_update_test

@@ -10,6 +10,8 @@
 #include <set>
 #include <vector>
 
+namespace ccd_broad_phase_cell_hash_test {
+
 using ccd::Aabb;
 using ccd::Vec3;
 
@@ -78,3 +80,5 @@ TEST_CASE("cell hash: random moves keep every overlap visible", "[broad_phase][c
   }
   check_covers(hash, boxes);
 }
+
+}  // namespace ccd_broad_phase_cell_hash_test

@@ -16,6 +16,8 @@
 #include <algorithm>
 #include <random>
 
+namespace ccd_broad_phase_grid_test {
+
 using ccd::Aabb;
 using ccd::BodyPair;
 using ccd::Vec3;
@@ -185,3 +187,5 @@ TEST_CASE("grid and hgrid separate touching boxes from boxes one tiny gap apart 
     check_exact(boxes, 33);
   }
 }
+
+}  // namespace ccd_broad_phase_grid_test

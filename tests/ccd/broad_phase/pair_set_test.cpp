@@ -9,6 +9,8 @@
 #include <set>
 #include <utility>
 
+namespace ccd_broad_phase_pair_set_test {
+
 TEST_CASE("PairSet equals std::set under random inserts and erases", "[broad_phase][sap]") {
   std::mt19937_64 gen(51);
   // Few bodies: many repeated keys, so inserts of members and erases of non-members are
@@ -39,3 +41,5 @@ TEST_CASE("PairSet equals std::set under random inserts and erases", "[broad_pha
   CHECK(set.size() == 0u);
   CHECK_FALSE(set.contains(0, 1));
 }
+
+}  // namespace ccd_broad_phase_pair_set_test

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+namespace ccd_broad_phase_registry_test {
+
 using ccd::Aabb;
 using ccd::BodyPair;
 using ccd::Vec3;
@@ -222,3 +224,5 @@ TEST_CASE("every broad phase equals brute force over frame sequences", "[broad_p
     }
   }
 }
+
+}  // namespace ccd_broad_phase_registry_test

@@ -12,6 +12,8 @@
 #include <limits>
 #include <random>
 
+namespace ccd_broad_phase_sap_test {
+
 using ccd::Aabb;
 using ccd::BodyPair;
 using ccd::Vec3;
@@ -214,3 +216,5 @@ TEST_CASE("sap swaps per frame follow the motion", "[broad_phase][sap]") {
     }
   }
 }
+
+}  // namespace ccd_broad_phase_sap_test

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <random>
 
+namespace ccd_broad_phase_static_index_test {
+
 using namespace ccd;
 
 namespace {
@@ -89,3 +91,5 @@ TEST_CASE("StaticIndex: empty scenery and polygon_box", "[broad_phase][scenery]"
   CHECK(pb.lo == Vec3(3, -1, 2));
   CHECK(pb.hi == Vec3(5, 2, 2));  // zero thickness in z
 }
+
+}  // namespace ccd_broad_phase_static_index_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+namespace ccd_broad_phase_variance_axis_test {
+
 using ccd::Aabb;
 using ccd::Vec3;
 
@@ -24,3 +26,5 @@ TEST_CASE("the sweep axis is the axis of largest centre variance", "[broad_phase
     CHECK(ccd::largest_variance_axis(boxes) == 0);
   }
 }
+
+}  // namespace ccd_broad_phase_variance_axis_test

@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+namespace ccd_geometry_aabb_test {
+
 using ccd::Aabb;
 using ccd::Vec3;
 
@@ -84,3 +86,5 @@ TEST_CASE("Aabb::around and merge", "[geometry][aabb]") {
   CHECK(m.lo == Vec3(-1, -2.5, 2.5));
   CHECK(m.hi == Vec3(1.5, 1, 3.5));
 }
+
+}  // namespace ccd_geometry_aabb_test

@@ -15,6 +15,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+namespace ccd_io_atomic_file_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -167,3 +169,5 @@ TEST_CASE("remove_pending_temporary_files removes a registered temporary folder 
   CHECK_FALSE(fs::exists(folder));
   ccd::release_temporary_folder(slot);
 }
+
+}  // namespace ccd_io_atomic_file_test

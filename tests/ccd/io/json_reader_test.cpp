@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+namespace ccd_io_json_reader_test {
+
 using ccd::parse_json_text;
 
 TEST_CASE("a key given twice in one object is an error naming its path", "[io][json]") {
@@ -78,3 +80,5 @@ TEST_CASE("only_fields: an unknown field is an error with the nearest known name
     CHECK_THROWS_WITH(r.only_fields(j, "", {"ab"}), R"(scene.json: "a\nb": unknown field (did you mean "ab"?))");
   }
 }
+
+}  // namespace ccd_io_json_reader_test

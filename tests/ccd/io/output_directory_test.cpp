@@ -10,6 +10,8 @@
 #include <string>
 #include <unistd.h>
 
+namespace ccd_io_output_directory_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -84,3 +86,5 @@ TEST_CASE("OutputDirectory commits whole folders and refuses folders it did not 
     CHECK_FALSE(fs::exists(temporary));
   }
 }
+
+}  // namespace ccd_io_output_directory_test

@@ -5,6 +5,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+namespace ccd_io_utf8_text_test {
+
 TEST_CASE("escape_invalid_utf8 keeps valid UTF-8 and escapes each invalid byte", "[io][utf8]") {
   SECTION("valid text is unchanged") {
     for (const std::string s : {"", "t.json", "caf\xc3\xa9/\xe2\x82\xac/\xf0\x9f\x98\x80.json"}) {
@@ -34,3 +36,5 @@ TEST_CASE("escape_invalid_utf8 keeps valid UTF-8 and escapes each invalid byte",
     CHECK(nlohmann::json(escaped).dump() == "\"r\\\\xFE\\\\xFF\\\\x80.json\"");
   }
 }
+
+}  // namespace ccd_io_utf8_text_test

@@ -13,6 +13,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_motion_free_rotation_test {
+
 using ccd::Vec3;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;
@@ -282,3 +284,5 @@ TEST_CASE("free rotation: an angular-velocity change is an impulse", "[motion][f
     CHECK(p.free->angular_velocity(t).norm() <= rot.max_omega(0, t, t));
   }
 }
+
+}  // namespace ccd_motion_free_rotation_test

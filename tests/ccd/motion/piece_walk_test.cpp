@@ -13,6 +13,8 @@
 #include <cstring>
 #include <vector>
 
+namespace ccd_motion_piece_walk_test {
+
 using ccd::Vec3;
 using ccd::test::body;
 
@@ -103,3 +105,5 @@ TEST_CASE("piece walk: far from the origin", "[motion][piece_walk]") {
   CHECK(m.pieces(0)[0].t1 == 2.0);
   check(m);
 }
+
+}  // namespace ccd_motion_piece_walk_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace ccd_motion_rigid_motion_test {
+
 using ccd::Vec3;
 
 TEST_CASE("max_point_speed bounds every point's speed: |v| + |omega| R", "[motion][rigid]") {
@@ -118,3 +120,5 @@ TEST_CASE("spheres(): plain spheres only, decided once for the scene, and assign
     CHECK(m.proxy(i).radius == balls.radius(i));
   }
 }
+
+}  // namespace ccd_motion_rigid_motion_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace ccd_motion_rotation_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -78,3 +80,5 @@ TEST_CASE("an angular-velocity change starts a piece from the orientation at the
   CHECK(rot.max_omega(0, 1.5, 2.0) == M_PI / 2);
   CHECK(rot.max_omega(0, 0.5, 1.5) == M_PI);
 }
+
+}  // namespace ccd_motion_rotation_test

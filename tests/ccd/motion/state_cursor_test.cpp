@@ -4,6 +4,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+namespace ccd_motion_state_cursor_test {
+
 using ccd::Vec3;
 
 TEST_CASE("the state cursor evaluates the pieces Trajectories::piece_at picks", "[motion]") {
@@ -34,3 +36,5 @@ TEST_CASE("the state cursor evaluates the pieces Trajectories::piece_at picks", 
   CHECK(out[0].position == Vec3(3, 2, 2));  // reflected at 1.5: 3.5 - 0.5
   CHECK(out[0].velocity == Vec3(-1, 0, 0));
 }
+
+}  // namespace ccd_motion_state_cursor_test

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ccd_motion_trajectory_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -256,3 +258,5 @@ TEST_CASE("velocity changes split the trajectory, the position stays continuous"
     CHECK(t.position(0, 1.5) == Vec3(5, 0.5, 5));   // back on the floor at s = 1
   }
 }
+
+}  // namespace ccd_motion_trajectory_test

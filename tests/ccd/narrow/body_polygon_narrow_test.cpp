@@ -11,6 +11,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ccd_narrow_body_polygon_narrow_test {
+
 namespace {
 
 struct Fixture {
@@ -87,3 +89,5 @@ TEST_CASE("body-polygon narrow phase: a sphere in a rigid scene takes the exact 
   CHECK(c.toi == Approx(1.5).margin(1e-12));
   CHECK(c.toi_error == 0.0);
 }
+
+}  // namespace ccd_narrow_body_polygon_narrow_test

@@ -12,6 +12,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_narrow_conservative_advancement_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -270,3 +272,5 @@ TEST_CASE("the relative bound: spinning sticks and boxes against moving balls an
   }
   CHECK(hits > 30);
 }
+
+}  // namespace ccd_narrow_conservative_advancement_test

@@ -12,6 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ccd_narrow_narrow_table_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -127,3 +129,5 @@ TEST_CASE("the narrow table's polygon column: spheres exact, other shapes by con
   t.add_polygon(ccd::ShapeKind::Box, &ccd::sphere_polygon_narrow);
   CHECK(t.find_polygon(ccd::ShapeKind::Box) == &ccd::sphere_polygon_narrow);
 }
+
+}  // namespace ccd_narrow_narrow_table_test

@@ -15,6 +15,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ccd_narrow_sphere_sphere_narrow_batch_test {
+
 using ccd::Vec3;
 using ccd::test::body;
 
@@ -119,3 +121,5 @@ TEST_CASE("batched narrow phase: random crowded scenes with walls and gravity eq
     CHECK(found > 0);
   }
 }
+
+}  // namespace ccd_narrow_sphere_sphere_narrow_batch_test

@@ -8,6 +8,8 @@
 
 #include <random>
 
+namespace ccd_queries_aabb_polygon_test {
+
 using namespace ccd;
 using ccd::test::make_polygon;
 using ccd::test::square_z;
@@ -69,3 +71,5 @@ TEST_CASE("aabb_polygon_overlap: random boxes against GJK", "[queries][scenery]"
   CHECK(both > 100);
   CHECK(neither > 100);
 }
+
+}  // namespace ccd_queries_aabb_polygon_test

@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+namespace ccd_queries_aabb_sweep_test {
+
 using ccd::Aabb;
 using ccd::AabbSweepStatus;
 using ccd::Vec3;
@@ -210,3 +212,5 @@ TEST_CASE("aabb_sweep equals brute force over exact sample times", "[queries][aa
   CHECK(misses > 500);
   CHECK(still_axes > 1000);
 }
+
+}  // namespace ccd_queries_aabb_sweep_test

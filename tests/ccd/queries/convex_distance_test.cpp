@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_queries_convex_distance_test {
+
 using ccd::ConvexDistance;
 using ccd::ProxyPose;
 using ccd::Vec3;
@@ -187,3 +189,5 @@ TEST_CASE("convex_distance: near-tangent faces and edges keep a bracket of the t
     if (g > 4e-9) CHECK(d.status == Status::Separated);
   }
 }
+
+}  // namespace ccd_queries_convex_distance_test

@@ -8,6 +8,8 @@
 
 #include <random>
 
+namespace ccd_queries_point_polygon_test {
+
 using namespace ccd;
 using ccd::test::make_polygon;
 using ccd::test::square_z;
@@ -75,3 +77,5 @@ TEST_CASE("point_polygon_closest: random points against GJK", "[queries][scenery
     CHECK((x - r.closest).squaredNorm() == Approx(r.distance_squared).margin(1e-12));
   }
 }
+
+}  // namespace ccd_queries_point_polygon_test

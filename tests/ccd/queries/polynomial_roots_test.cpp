@@ -6,6 +6,8 @@
 #include <random>
 #include <vector>
 
+namespace ccd_queries_polynomial_roots_test {
+
 using ccd::Polynomial;
 using ccd::SublevelSet;
 
@@ -162,3 +164,5 @@ TEST_CASE("random quartics with known roots", "[queries][roots]") {
   }
   CHECK(checked > 1000);
 }
+
+}  // namespace ccd_queries_polynomial_roots_test

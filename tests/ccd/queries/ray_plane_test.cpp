@@ -6,6 +6,8 @@
 #include <limits>
 #include <random>
 
+namespace ccd_queries_ray_plane_test {
+
 using ccd::RayPlaneStatus;
 using ccd::Vec3;
 
@@ -137,3 +139,5 @@ TEST_CASE("ray_plane degenerate cases", "[queries][ray_plane]") {
     CHECK(hits > 1000);
   }
 }
+
+}  // namespace ccd_queries_ray_plane_test

@@ -9,6 +9,8 @@
 #include <random>
 #include <vector>
 
+namespace ccd_queries_ray_polygon_test {
+
 using ccd::RayPolygonStatus;
 using ccd::Vec3;
 
@@ -252,3 +254,5 @@ TEST_CASE("ray_polygon is watertight: shared vertices and edges count exactly on
     }
   }
 }
+
+}  // namespace ccd_queries_ray_polygon_test

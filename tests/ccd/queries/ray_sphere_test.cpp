@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+namespace ccd_queries_ray_sphere_test {
+
 using ccd::RaySphereStatus;
 using ccd::Vec3;
 
@@ -408,3 +410,5 @@ TEST_CASE("ray_sphere against a long double reference on 1e5 random rays", "[que
   CHECK(differences == 0);
   CHECK(hits > cases / 5);  // the generator really produces hits outside the band
 }
+
+}  // namespace ccd_queries_ray_sphere_test

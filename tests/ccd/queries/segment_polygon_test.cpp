@@ -9,6 +9,8 @@
 
 #include <random>
 
+namespace ccd_queries_segment_polygon_test {
+
 using namespace ccd;
 using ccd::test::square_z;
 using Status = SegmentPolygonResult::Status;
@@ -81,3 +83,5 @@ TEST_CASE("segment_polygon_closest: random segments against GJK", "[queries][sce
   }
   CHECK(crossing > 0);
 }
+
+}  // namespace ccd_queries_segment_polygon_test

@@ -5,6 +5,8 @@
 #include <limits>
 #include <random>
 
+namespace ccd_queries_segment_segment_test {
+
 using ccd::SegmentSegmentResult;
 using ccd::Vec3;
 using Status = SegmentSegmentResult::Status;
@@ -156,3 +158,5 @@ TEST_CASE("segment_segment_closest matches the long-double reference on random s
     check_against_reference(p2, q2, p1, q1);  // swapped roles
   }
 }
+
+}  // namespace ccd_queries_segment_segment_test

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_queries_sphere_box_distance_test {
+
 using ccd::ConvexDistance;
 using ccd::Vec3;
 
@@ -108,3 +110,5 @@ TEST_CASE("sphere-box distance: a gap below the rounding allowance is not certif
   CHECK(d.lower < 0.0);
   CHECK(d.upper > 0.0);
 }
+
+}  // namespace ccd_queries_sphere_box_distance_test

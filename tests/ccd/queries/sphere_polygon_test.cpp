@@ -9,6 +9,8 @@
 #include <random>
 #include <vector>
 
+namespace ccd_queries_sphere_polygon_test {
+
 using ccd::ContactInterval;
 using ccd::StaticPolygon;
 using ccd::Vec3;
@@ -276,3 +278,5 @@ TEST_CASE("sphere-polygon: random paths against the distance by definition", "[q
   CHECK(with_contact > 20);
   CHECK(touching_ends > 20);
 }
+
+}  // namespace ccd_queries_sphere_polygon_test

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ccd_queries_sphere_sphere_batch_test {
+
 using ccd::MovingSphere;
 using ccd::Vec3;
 
@@ -214,3 +216,5 @@ TEST_CASE("batched sphere contact: random pairs equal the scalar exact query", "
   CHECK(counts[2] > 0);
   CHECK(counts[2] < n / 4);
 }
+
+}  // namespace ccd_queries_sphere_sphere_batch_test

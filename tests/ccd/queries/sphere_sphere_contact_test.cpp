@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_queries_sphere_sphere_contact_test {
+
 using ccd::ContactStatus;
 using ccd::MovingSphere;
 using ccd::Vec3;
@@ -297,3 +299,5 @@ TEST_CASE("near-tangencies from rounded data follow what the rounded data say", 
   CHECK(misses > 1000);
   CHECK(crossings > 1000);
 }
+
+}  // namespace ccd_queries_sphere_sphere_contact_test

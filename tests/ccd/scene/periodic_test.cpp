@@ -10,6 +10,8 @@
 
 #include <set>
 
+namespace ccd_scene_periodic_test {
+
 using nlohmann::json;
 
 namespace {
@@ -134,3 +136,5 @@ TEST_CASE("periodic box: images of a box meet the cell, nearest image", "[scene]
   CHECK(p.nearest({4, 4, 4}, {4, 4, 7.9}) == ccd::ImageShift{0, 0, 0});  // z reflects
   CHECK(p.shift(0, -3).value() == -24.0);
 }
+
+}  // namespace ccd_scene_periodic_test

@@ -13,6 +13,8 @@
 #include <random>
 #include <sstream>
 
+namespace ccd_scene_recorded_frames_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -287,3 +289,5 @@ TEST_CASE("recorded frames: a recorded motion's truth equals the truth of the sc
     }
   }
 }
+
+}  // namespace ccd_scene_recorded_frames_test

@@ -20,6 +20,8 @@
 #include <limits>
 #include <unistd.h>
 
+namespace ccd_scene_scene_binary_test {
+
 using ccd::test::same_bits;
 using nlohmann::json;
 
@@ -303,3 +305,5 @@ TEST_CASE("a binary scene's values are validated like the JSON file's, with the 
   s.gravity.x() = std::numeric_limits<double>::quiet_NaN();
   CHECK(error_of_binary(ccd::scene_to_binary(s, "s")) == "s.ccds: gravity[0]: must be finite");
 }
+
+}  // namespace ccd_scene_scene_binary_test

@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+namespace ccd_scene_scene_digest_test {
+
 using nlohmann::json;
 
 namespace {
@@ -53,3 +55,5 @@ TEST_CASE("the same scene written differently has the same digest, any change ch
     CHECK(ccd::scene_digest(parse(k)) != digest);
   }
 }
+
+}  // namespace ccd_scene_scene_digest_test

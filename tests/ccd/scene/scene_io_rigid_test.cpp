@@ -9,6 +9,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_scene_scene_io_rigid_test {
+
 using ccd::InputError;
 using ccd::Vec3;
 using nlohmann::json;
@@ -182,3 +184,5 @@ TEST_CASE("bad rigid scenes name the file, the field and the index", "[scene][ri
   }
   CHECK(error_of(j) == expected);
 }
+
+}  // namespace ccd_scene_scene_io_rigid_test

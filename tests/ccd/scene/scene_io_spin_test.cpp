@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace ccd_scene_scene_io_spin_test {
+
 using ccd::Vec3;
 using nlohmann::json;
 
@@ -159,3 +161,5 @@ TEST_CASE("a free hull's mass properties: thousands of points load, a huge hull 
   for (json& b : given["bodies"]) b["inertia"] = {1, 1, 1};
   CHECK(error_of(given).empty());
 }
+
+}  // namespace ccd_scene_scene_io_spin_test

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <fstream>
 
+namespace ccd_scene_scene_io_test {
+
 using ccd::InputError;
 using nlohmann::json;
 
@@ -158,3 +160,5 @@ TEST_CASE("a misspelt field in a scene is an error with the nearest known name",
     CHECK(error_of(j).empty());
   }
 }
+
+}  // namespace ccd_scene_scene_io_test

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <limits>
 
+namespace ccd_scene_scene_io_velocity_changes_test {
+
 using nlohmann::json;
 
 namespace {
@@ -101,3 +103,5 @@ TEST_CASE("non-finite velocity changes built in memory are rejected", "[scene][v
     CHECK(error() == "s.json: bodies[0].velocity_changes[1].velocity[2]: must be finite");
   }
 }
+
+}  // namespace ccd_scene_scene_io_velocity_changes_test

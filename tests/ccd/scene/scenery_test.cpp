@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace ccd_scene_scenery_test {
+
 using ccd::Vec3;
 using nlohmann::json;
 
@@ -164,3 +166,5 @@ TEST_CASE("polygon_from_vertices and polygon_defect", "[scene][scenery]") {
   CHECK(ccd::polygon_defect({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, 0, 0)})->reason.find("collinear") !=
         std::string::npos);
 }
+
+}  // namespace ccd_scene_scenery_test

@@ -10,6 +10,8 @@
 #include <tuple>
 #include <vector>
 
+namespace ccd_shape_convex_hull_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -83,3 +85,5 @@ TEST_CASE("degenerate point sets have no hull faces", "[shape][hull]") {
   CHECK(ccd::convex_hull_triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 3, 0}}).empty());
   CHECK(ccd::convex_hull_triangles({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}).empty());
 }
+
+}  // namespace ccd_shape_convex_hull_test

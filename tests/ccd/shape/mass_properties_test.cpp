@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+namespace ccd_shape_mass_properties_test {
+
 using ccd::Vec3;
 using Mat3 = Eigen::Matrix3d;
 
@@ -97,3 +99,5 @@ TEST_CASE("principal inertia: ascending moments, proper axes, diagonal tensors e
   CHECK(p.axes.determinant() == Approx(1.0));
   CHECK((p.axes * p.moments.asDiagonal() * p.axes.transpose() - I).norm() <= 1e-14);
 }
+
+}  // namespace ccd_shape_mass_properties_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace ccd_shape_shape_test {
+
 using ccd::Vec3;
 
 TEST_CASE("shape kinds round-trip through their names", "[shape]") {
@@ -76,3 +78,5 @@ TEST_CASE("hull degeneracy: too few, coincident, collinear and coplanar points",
     CHECK(ccd::hull_degeneracy({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.25, 0.25, 1e-6}}).empty());
   }
 }
+
+}  // namespace ccd_shape_shape_test

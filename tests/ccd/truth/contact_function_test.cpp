@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 
+namespace ccd_truth_contact_function_test {
+
 using ccd::Body;
 using ccd::ContactInterval;
 using ccd::Scene;
@@ -219,3 +221,5 @@ TEST_CASE("the sample test is the truth's definition of touching", "[truth][band
     }
   }
 }
+
+}  // namespace ccd_truth_contact_function_test

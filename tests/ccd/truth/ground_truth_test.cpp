@@ -5,6 +5,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_ground_truth_test {
+
 using ccd::Body;
 using ccd::ContactEvent;
 using ccd::Scene;
@@ -136,3 +138,5 @@ TEST_CASE("compute_truth on tiny and degenerate scenes", "[truth]") {
     CHECK(e[0].enter == Approx(0.5).margin(1e-9));
   }
 }
+
+}  // namespace ccd_truth_ground_truth_test

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_pair_contact_test {
+
 using ccd::Body;
 using ccd::ContactInterval;
 using ccd::Scene;
@@ -182,3 +184,5 @@ TEST_CASE("pair_first_contact equals the first interval on random windows", "[tr
   }
   CHECK(compared > 20);
 }
+
+}  // namespace ccd_truth_pair_contact_test

@@ -17,6 +17,8 @@
 #include <memory>
 #include <tuple>
 
+namespace ccd_truth_periodic_rigid_truth_test {
+
 namespace {
 
 struct Bracketed {
@@ -191,3 +193,5 @@ TEST_CASE("periodic rigid truth: the generic solver with images agrees with the 
   CHECK(y.size() >= 5);
   require_same(x, y);
 }
+
+}  // namespace ccd_truth_periodic_rigid_truth_test

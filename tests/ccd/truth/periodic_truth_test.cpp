@@ -11,6 +11,8 @@
 
 #include <cmath>
 
+namespace ccd_truth_periodic_truth_test {
+
 namespace {
 
 using ccd::ContactEvent;
@@ -99,3 +101,5 @@ TEST_CASE("periodic contact test uses the nearest image", "[truth][periodic]") {
   CHECK(ccd::in_contact(traj, 0, 1, 2.5));   // through it
   CHECK_FALSE(ccd::in_contact(traj, 0, 1, 3.5));
 }
+
+}  // namespace ccd_truth_periodic_truth_test

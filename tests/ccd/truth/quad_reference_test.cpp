@@ -15,6 +15,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_quad_reference_test {
+
 namespace {
 
 using Q = __float128;
@@ -105,3 +107,5 @@ TEST_CASE("the truth agrees with a quadruple-precision reference at every event 
   }
   CHECK(apart > 10000);
 }
+
+}  // namespace ccd_truth_quad_reference_test

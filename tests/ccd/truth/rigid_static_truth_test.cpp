@@ -15,6 +15,8 @@
 #include <memory>
 #include <random>
 
+namespace ccd_truth_rigid_static_truth_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -254,3 +256,5 @@ TEST_CASE("rigid static truth: random tumbling shapes against certified distance
       }
   CHECK(overlaps > 0);
 }
+
+}  // namespace ccd_truth_rigid_static_truth_test

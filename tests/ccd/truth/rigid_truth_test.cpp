@@ -9,6 +9,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_rigid_truth_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -148,3 +150,5 @@ TEST_CASE("cross-path: on sphere scenes the generic bracket search agrees with t
     CHECK((used[k] || generic.errors[k].grazing));
   }
 }
+
+}  // namespace ccd_truth_rigid_truth_test

@@ -9,6 +9,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace ccd_truth_sphere_refinement_test {
+
 using ccd::Vec3;
 
 namespace {
@@ -96,3 +98,5 @@ TEST_CASE("sphere refinement: touching and crossing pairs are still found", "[tr
     CHECK(t.errors[0].exit_error < 1e-7);
   }
 }
+
+}  // namespace ccd_truth_sphere_refinement_test

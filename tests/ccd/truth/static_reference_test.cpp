@@ -22,6 +22,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_static_reference_test {
+
 using ccd::Scene;
 using ccd::StaticEvent;
 using ccd::Trajectories;
@@ -238,3 +240,5 @@ TEST_CASE("static truth: constructed dyadic cases are exact far from the origin"
     check_against_reference(s, Q(Q(1e-30) * Q(o + 10) * Q(o + 10)), 200);
   }
 }
+
+}  // namespace ccd_truth_static_reference_test

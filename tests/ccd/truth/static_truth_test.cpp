@@ -9,6 +9,8 @@
 #include <cmath>
 #include <random>
 
+namespace ccd_truth_static_truth_test {
+
 using ccd::ContactInterval;
 using ccd::Scene;
 using ccd::StaticEvent;
@@ -174,3 +176,5 @@ TEST_CASE("static truth: windows, threads and dense sampling agree", "[truth][sc
     }
   CHECK(deep > 100);
 }
+
+}  // namespace ccd_truth_static_truth_test

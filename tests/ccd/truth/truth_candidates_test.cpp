@@ -13,6 +13,8 @@
 #include <set>
 #include <tuple>
 
+namespace ccd_truth_truth_candidates_test {
+
 using ccd::Aabb;
 using ccd::Scene;
 using ccd::Trajectories;
@@ -181,3 +183,5 @@ TEST_CASE("truth candidates: exactly touching boxes are candidates, apart by one
     CHECK(c.pairs[0] == ccd::CandidateRun{0, 1, 3, 3});
   }
 }
+
+}  // namespace ccd_truth_truth_candidates_test

@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace ccd_truth_truth_io_test {
+
 using ccd::ContactEvent;
 using ccd::TruthFile;
 using nlohmann::json;
@@ -244,3 +246,5 @@ TEST_CASE("truth files carry the undecided flag, and files without it read grazi
     CHECK(error_of(bad_static) == "t.json: static_events[0].undecided: must be true or false");
   }
 }
+
+}  // namespace ccd_truth_truth_io_test

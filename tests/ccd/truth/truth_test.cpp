@@ -12,6 +12,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+namespace ccd_truth_truth_test {
+
 using ccd::Scene;
 using ccd::Vec3;
 
@@ -157,3 +159,5 @@ TEST_CASE("truth table: the default entries, the bracket table, a missing entry"
   CHECK_THROWS_AS(empty.find(K::Sphere, K::Box), std::logic_error);
   CHECK_THROWS_AS(empty.find_polygon(K::Capsule), std::logic_error);
 }
+
+}  // namespace ccd_truth_truth_test

@@ -16,6 +16,8 @@
 #include <cmath>
 #include <vector>
 
+namespace ccd_truth_velocity_changes_truth_test {
+
 using ccd::Vec3;
 using ccd::test::body;
 
@@ -183,3 +185,5 @@ TEST_CASE("velocity changes: rigid bodies, centres jump and orientations do not"
   for (const double t : {0.0, 0.25, 0.5, 1.0, 1.75})
     CHECK(with.orientation(0, t).coeffs() == without.orientation(0, t).coeffs());
 }
+
+}  // namespace ccd_truth_velocity_changes_truth_test

@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace ccd_util_integer_text_test {
+
 TEST_CASE("parse_integer accepts digits in range and nothing else", "[util][cli]") {
   using ccd::parse_integer;
   CHECK(parse_integer("4", 1, 4096) == 4u);
@@ -21,3 +23,5 @@ TEST_CASE("parse_integer_list reads comma-separated integers", "[util][cli]") {
   for (const char* bad : {"", ",", "1,", ",1", "1,,2", "1,x", "1;2"})
     CHECK_FALSE(parse_integer_list(bad, 1, 1000000).has_value());
 }
+
+}  // namespace ccd_util_integer_text_test

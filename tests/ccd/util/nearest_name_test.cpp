@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+namespace ccd_util_nearest_name_test {
+
 using ccd::edit_distance;
 using ccd::nearest_name;
 
@@ -37,3 +39,5 @@ TEST_CASE("nearest_name suggests only a near name, the nearest one", "[util]") {
   CHECK(ccd::did_you_mean("velocty", fields) == R"( (did you mean "velocity"?))");
   CHECK(ccd::did_you_mean("xy", short_names).empty());
 }
+
+}  // namespace ccd_util_nearest_name_test

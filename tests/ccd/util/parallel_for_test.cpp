@@ -6,6 +6,8 @@
 #include <atomic>
 #include <vector>
 
+namespace ccd_util_parallel_for_test {
+
 TEST_CASE("parallel_for calls every index exactly once", "[util][threads]") {
   for (std::size_t count : {std::size_t{0}, std::size_t{1}, std::size_t{5}, std::size_t{1000}})
     for (unsigned threads : {0u, 1u, 2u, 7u}) {
@@ -32,3 +34,5 @@ TEST_CASE("parallel_for with one thread runs in order on the caller", "[util][th
   CHECK(ccd::resolve_threads(3) == 3u);
   CHECK(ccd::resolve_threads(0) >= 1u);
 }
+
+}  // namespace ccd_util_parallel_for_test

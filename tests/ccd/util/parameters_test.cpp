@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+namespace ccd_util_parameters_test {
+
 using ccd::ParameterKind;
 using ccd::ParameterSpec;
 using ccd::ParameterValue;
@@ -175,3 +177,5 @@ TEST_CASE("a parameter is described with its default, unit, doc and range", "[pa
   constexpr ParameterSpec cell{"cell", 0.0, "smallest cell size", ParameterKind::Real, {0.0, 1e6}, "m"};
   CHECK(ccd::describe_parameter(cell) == "cell=0 m (smallest cell size; a number in [0, 1e+06])");
 }
+
+}  // namespace ccd_util_parameters_test

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <thread>
 
+namespace ccd_util_thread_cpu_time_test {
+
 namespace {
 
 // Spins until the calling thread has used `seconds` of CPU time; returns a value that
@@ -41,3 +43,5 @@ TEST_CASE("thread CPU time counts this thread's work, not its waits or other thr
     CHECK(ccd::thread_cpu_seconds() - t0 < 0.02);
   }
 }
+
+}  // namespace ccd_util_thread_cpu_time_test

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <random>
 
+namespace cloth_ccd_certified_proximity_test {
+
 using ccd::Vec3;
 using ccd::cloth::certified_proximity;
 using ccd::cloth::exact_contact;
@@ -183,3 +185,5 @@ TEST_CASE("certified proximity: bad input and a spent budget are Undecided", "[c
   CHECK(certified_proximity(PrimitivePair::EdgeEdge, passing_at(PrimitivePair::EdgeEdge, 0.0), -1.0).decision ==
         Proximity::Undecided);
 }
+
+}  // namespace cloth_ccd_certified_proximity_test

@@ -7,6 +7,8 @@
 #include <limits>
 #include <random>
 
+namespace cloth_ccd_triangle_ccd_test {
+
 using ccd::QueryStatus;
 using ccd::Vec3;
 using ccd::cloth::exact_contact;
@@ -253,3 +255,5 @@ TEST_CASE("triangle CCD finds constructed contacts anywhere on the primitives", 
   }
   CHECK(checked > 1000);
 }
+
+}  // namespace cloth_ccd_triangle_ccd_test

@@ -17,6 +17,8 @@
 #include <random>
 #include <catch2/catch.hpp>
 
+namespace cloth_cull_cullers_test {
+
 using namespace ccd::cloth;
 using ccd::Vec3;
 
@@ -211,3 +213,5 @@ TEST_CASE("the bvh is rebuilt when refitting degrades it, and only then", "[clot
     CHECK(rebuilt(*c) == 0);
   }
 }
+
+}  // namespace cloth_cull_cullers_test

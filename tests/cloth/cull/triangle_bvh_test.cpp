@@ -22,6 +22,8 @@
 #include <numbers>
 #include <random>
 
+namespace cloth_cull_triangle_bvh_test {
+
 using namespace ccd::cloth;
 using ccd::Vec3;
 
@@ -196,3 +198,5 @@ TEST_CASE("sort_candidates orders as std::sort does", "[cloth][cull]") {
     CHECK(c == expected);
   }
 }
+
+}  // namespace cloth_cull_triangle_bvh_test

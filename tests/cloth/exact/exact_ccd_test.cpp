@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace cloth_exact_exact_ccd_test {
+
 using ccd::Vec3;
 using ccd::cloth::exact_contact;
 using ccd::cloth::hard_queries;
@@ -51,3 +53,5 @@ TEST_CASE("exact CCD with a minimum separation", "[cloth][exact]") {
     CHECK_FALSE(exact_contact(PrimitivePair::EdgeEdge, to_rational(ends), mpq_class(1, 4) - mpq_class(1, 1 << 30)));
   }
 }
+
+}  // namespace cloth_exact_exact_ccd_test

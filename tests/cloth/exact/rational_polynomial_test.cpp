@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace cloth_exact_rational_polynomial_test {
+
 using ccd::cloth::IsolatedRoot;
 using ccd::cloth::RationalPolynomial;
 
@@ -62,3 +64,5 @@ TEST_CASE("root isolation and signs at algebraic roots", "[cloth][exact]") {
     CHECK(sign_at_root(q * q + RationalPolynomial::constant(mpq_class(1, 1000000)), q, r) == 1);
   }
 }
+
+}  // namespace cloth_exact_rational_polynomial_test

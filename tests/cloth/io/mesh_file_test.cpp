@@ -12,6 +12,8 @@
 #include <fstream>
 #include <unistd.h>
 
+namespace cloth_io_mesh_file_test {
+
 using ccd::InputError;
 using ccd::cloth::MeshFrames;
 using ccd::cloth::PlyEncoding;
@@ -119,3 +121,5 @@ TEST_CASE("mesh files: the fixtures of data/meshes read the same tetrahedron", "
     CHECK(same_bits(read_mesh(std::string(CCDLAB_SOURCE_DIR) + "/data/meshes/" + name), tetrahedron));
   }
 }
+
+}  // namespace cloth_io_mesh_file_test

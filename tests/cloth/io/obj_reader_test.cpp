@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace cloth_io_obj_reader_test {
+
 using ccd::InputError;
 using ccd::cloth::parse_obj;
 using namespace meshtest;
@@ -109,3 +111,5 @@ TEST_CASE("OBJ reader: bad input is one line naming the file and the line", "[cl
   CHECK(error_of("v 0 0 0\n\x7f\x45LF\x01\n") == "frame.obj: line 2: unknown statement '?ELF?'");
   CHECK(error_of("v 0 \\\n0 \\\n0\nf 1 1 1 1\n") == "frame.obj: line 4: face has 4 vertices; only triangles are read");
 }
+
+}  // namespace cloth_io_obj_reader_test

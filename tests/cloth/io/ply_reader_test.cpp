@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+namespace cloth_io_ply_reader_test {
+
 using ccd::InputError;
 using ccd::cloth::parse_ply;
 using ccd::cloth::ply_type_is_integer;
@@ -280,3 +282,5 @@ TEST_CASE("PLY reader: bad input is one line naming the file, the element and it
     CHECK(error_of(bytes).starts_with("t1.ply: face 2: vertex index -"));
   }
 }
+
+}  // namespace cloth_io_ply_reader_test

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <unistd.h>
 
+namespace cloth_io_ply_writer_test {
+
 using ccd::cloth::format_ply;
 using ccd::cloth::parse_ply;
 using ccd::cloth::PlyEncoding;
@@ -78,3 +80,5 @@ TEST_CASE("PLY writer: files are written whole, in place of the old one", "[clot
   CHECK_THROWS_AS(write_ply((dir / "no-such-folder" / "f.ply").string(), dyadic_mesh()), ccd::InputError);
   std::filesystem::remove_all(dir);
 }
+
+}  // namespace cloth_io_ply_writer_test

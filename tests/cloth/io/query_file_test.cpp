@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+namespace cloth_io_query_file_test {
+
 using ccd::InputError;
 using ccd::cloth::format_query_file;
 using ccd::cloth::LinearQuery;
@@ -105,3 +107,5 @@ TEST_CASE("query files: every malformed input is an InputError naming line and c
   CHECK(error_of(mixed) == "q.csv: line 4, column 7: expected result differs from the query's first row (line 1)");
   CHECK(error_of(rows() + rows("0")) == "no error");
 }
+
+}  // namespace cloth_io_query_file_test

@@ -14,6 +14,8 @@
 #include <catch2/catch.hpp>
 #include <set>
 
+namespace cloth_mesh_ccd_mesh_ccd_test {
+
 using namespace ccd::cloth;
 using ccd::Vec3;
 
@@ -269,3 +271,5 @@ TEST_CASE("mesh ccd refuses bad input, naming the element", "[cloth][mesh_ccd]")
   o.separation = -1;
   CHECK(message(m, o) == "separation must be a finite number >= 0");
 }
+
+}  // namespace cloth_mesh_ccd_mesh_ccd_test

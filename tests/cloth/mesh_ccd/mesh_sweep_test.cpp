@@ -18,6 +18,8 @@
 #include <cmath>
 #include <limits>
 
+namespace cloth_mesh_ccd_mesh_sweep_test {
+
 using namespace ccd::cloth;
 
 namespace {
@@ -163,3 +165,5 @@ TEST_CASE("mesh_sweep's slabs: boxes on slab boundaries, far from the origin, ze
     check_layouts(flat, 0.0, {64 * h});
   }
 }
+
+}  // namespace cloth_mesh_ccd_mesh_sweep_test

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+namespace cloth_sim_cloth_scene_test {
+
 using ccd::cloth::parse_cloth_scene;
 using nlohmann::json;
 
@@ -77,3 +79,5 @@ TEST_CASE("cloth scene files: fields read and every error named", "[cloth][sim]"
   j["format"] = "ccdlab-scene/1";
   CHECK(error_of(j) == "c.json: format: must be \"ccdlab-cloth/1\"");
 }
+
+}  // namespace cloth_sim_cloth_scene_test

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
+namespace cloth_sim_cloth_simulator_test {
+
 using ccd::Vec3;
 using ccd::cloth::builtin_cloth_scene;
 using ccd::cloth::ClothScene;
@@ -122,3 +124,5 @@ TEST_CASE("cloth obstacles and prescribed motion", "[cloth][sim]") {
     for (std::uint32_t p : s.pinned) CHECK(sim.positions()[p] == x0[p]);
   }
 }
+
+}  // namespace cloth_sim_cloth_simulator_test

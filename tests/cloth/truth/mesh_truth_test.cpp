@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <random>
 
+namespace cloth_truth_mesh_truth_test {
+
 using namespace ccd::cloth;
 using ccd::Vec3;
 
@@ -200,3 +202,5 @@ TEST_CASE("mesh truth file: round trip, and a stale or malformed file is refused
   unknown["extra"] = 1;
   refused(unknown, "extra");
 }
+
+}  // namespace cloth_truth_mesh_truth_test
