@@ -44,16 +44,17 @@
 #include <ccd/io/input_error.hpp>
 #include <ccd/scene/scene_digest.hpp>
 #include <ccd/scene/scene_io.hpp>
-#include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/truth.hpp>
 #include <ccd/truth/truth_io.hpp>
+#include <ccd/util/thread_cpu_time.hpp>
+
+#include <CLI/CLI.hpp>
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/sphere.h>
 #include <fcl/math/motion/interp_motion.h>
 #include <fcl/narrowphase/continuous_collision.h>
-
-#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -76,42 +77,31 @@ struct Args {
   int repeats = 5;
 };
 
+// One line on stderr and exit 2 (bad arguments or input).
 [[noreturn]] void usage_error(const std::string& what) {
-  std::cerr << "rigid_peers: " << what
-            << " (usage: rigid_peers --scene SCENE.json [--truth TRUTH.json] [--steps=N] [--repeats=N])\n";
+  std::cerr << "rigid_peers: " << what << " (rigid_peers --help lists the options)\n";
   std::exit(2);
-}
-
-int parse_count(const std::string& name, const std::string& text) {
-  char* end = nullptr;
-  const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || v < 1 || v > 1000000) usage_error(name + ": must be an integer in [1, 1000000]");
-  return static_cast<int>(v);
 }
 
 Args parse(int argc, char** argv) {
   Args a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string s = argv[i];
-    auto value = [&](const std::string& flag) -> std::string {
-      if (s.rfind(flag + "=", 0) == 0) return s.substr(flag.size() + 1);
-      if (i + 1 >= argc) usage_error(flag + ": needs a value");
-      return argv[++i];
-    };
-    if (s == "--scene" || s.rfind("--scene=", 0) == 0) a.scene = value("--scene");
-    else if (s == "--truth" || s.rfind("--truth=", 0) == 0) a.truth = value("--truth");
-    else if (s == "--steps" || s.rfind("--steps=", 0) == 0) a.steps = parse_count("--steps", value("--steps"));
-    else if (s == "--repeats" || s.rfind("--repeats=", 0) == 0) a.repeats = parse_count("--repeats", value("--repeats"));
-    else usage_error("unknown argument " + s);
+  CLI::App app("FCL's continuous collision against ccdlab's conservative advancement on spinning bodies,\n"
+               "misses counted against the certified truth.",
+               "rigid_peers");
+  app.add_option("--scene", a.scene, "the scene (ccdlab-scene JSON with shapes and spin)")->required();
+  app.add_option("--truth", a.truth, "its truth from `ccdlab truth` (computed here when not given)");
+  app.add_option("--steps", a.steps, "steps the horizon is cut into")->check(CLI::Range(1, 1000000));
+  app.add_option("--repeats", a.repeats, "timed passes per method (the median is kept)")
+      ->check(CLI::Range(1, 1000000));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    std::exit(0);
+  } catch (const CLI::ParseError& e) {
+    usage_error(e.what());
   }
-  if (a.scene.empty()) usage_error("--scene is required");
   return a;
-}
-
-double thread_cpu_s() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 // A query: one pair over one step, with what the truth says.
@@ -202,9 +192,9 @@ int main(int argc, char** argv) {
       events = std::move(t.events);
       errors = t.errors.empty() ? std::vector<ccd::EventError>(events.size()) : std::move(t.errors);
     } else {
-      ccd::RigidTruthResult r = ccd::compute_rigid_truth(motion);
-      events = std::move(r.events);
-      errors = std::move(r.errors);
+      ccd::Truth t = ccd::compute_truth(motion, {});
+      events = std::move(t.events);
+      errors = t.errors.empty() ? std::vector<ccd::EventError>(events.size()) : std::move(t.errors);
     }
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> by_pair;
     for (std::size_t e = 0; e < events.size(); ++e) by_pair[{events[e].a, events[e].b}].push_back(e);
@@ -319,9 +309,9 @@ int main(int argc, char** argv) {
       std::vector<Answer> answers(queries.size());
       std::vector<double> times;
       for (int r = 0; r < args.repeats; ++r) {
-        const double c0 = thread_cpu_s();
+        const double c0 = ccd::thread_cpu_seconds();
         for (std::size_t i = 0; i < queries.size(); ++i) answers[i] = m.run(queries[i]);
-        times.push_back(thread_cpu_s() - c0);
+        times.push_back(ccd::thread_cpu_seconds() - c0);
       }
       std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
       Tally t;
