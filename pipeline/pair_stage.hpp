@@ -2,10 +2,26 @@
 // What one step's stages leave for one kind of pair (pipeline/step_pipeline.hpp): the
 // body pairs (BodyPair, PairContact) and the body-polygon pairs (StaticPair, StaticContact)
 // each fill one PairStage of a StepResult, stage by stage.
+#include <ccd/broad_phase/broad_phase.hpp>
+#include <ccd/broad_phase/static_index.hpp>
+#include <ccd/narrow/contact_result.hpp>
+
 #include <cstdint>
 #include <vector>
 
 namespace ccd {
+
+/// A body pair the narrow phase found in contact.
+struct PairContact {
+  BodyPair pair;
+  ContactResult contact;
+};
+
+/// A body's contact with a static polygon found by the narrow phase.
+struct StaticContact {
+  StaticPair pair;
+  ContactResult contact;
+};
 
 template <class Pair, class Contact>
 struct PairStage {

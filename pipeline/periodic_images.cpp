@@ -5,12 +5,6 @@
 #include <limits>
 
 namespace ccd {
-namespace {
-
-ImageShift plus(const ImageShift& x, const ImageShift& y) { return {x[0] + y[0], x[1] + y[1], x[2] + y[2]}; }
-ImageShift minus(const ImageShift& x, const ImageShift& y) { return {x[0] - y[0], x[1] - y[1], x[2] - y[2]}; }
-
-}  // namespace
 
 ImageShift wrap_jump(const PeriodicBox& box, const Piece& prev, const Piece& next) {
   ImageShift s{0, 0, 0};
@@ -45,8 +39,9 @@ const StepContext& PeriodicImages::begin(const StepContext& ctx) {
     const std::size_t i1 = std::max(ref, motion.piece_index(i, ctx.t1));
     turns.assign(i1 - i0 + 1, ImageShift{0, 0, 0});
     for (std::size_t j = ref + 1; j <= i1; ++j)
-      turns[j - i0] = plus(turns[j - 1 - i0], wrap_jump(box, ps[j - 1], ps[j]));
-    for (std::size_t j = ref; j-- > i0;) turns[j - i0] = minus(turns[j + 1 - i0], wrap_jump(box, ps[j], ps[j + 1]));
+      turns[j - i0] = shift_sum(turns[j - 1 - i0], wrap_jump(box, ps[j - 1], ps[j]));
+    for (std::size_t j = ref; j-- > i0;)
+      turns[j - i0] = shift_difference(turns[j + 1 - i0], wrap_jump(box, ps[j], ps[j + 1]));
     scratch_.resize(turns.size());
     for (std::size_t j = 0; j < turns.size(); ++j) scratch_[j] = image_offset(box, turns[j]);
     local_.append_body(motion.radius(i), ps.subspan(i0, i1 - i0 + 1), ls.subspan(i0, i1 - i0 + 1), scratch_);

@@ -28,9 +28,18 @@
 #include <ccd/scene/periodic.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace ccd {
+
+/// x + y and x - y, axis by axis.
+inline ImageShift shift_sum(const ImageShift& x, const ImageShift& y) {
+  return {x[0] + y[0], x[1] + y[1], x[2] + y[2]};
+}
+inline ImageShift shift_difference(const ImageShift& x, const ImageShift& y) {
+  return {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+}
 
 /// Periods a body jumped by (per wrapped axis) from piece `prev` to the next piece `next`:
 /// the end of prev and the start of next differ by a whole number of periods (0 at breaks
@@ -53,6 +62,9 @@ class PeriodicImages {
   const RigidMotion& motion() const { return motion_; }
   std::uint32_t owner(std::uint32_t local) const { return owner_[local]; }
   const ImageShift& shift(std::uint32_t local) const { return shift_[local]; }
+  /// owner() and shift() of every local body, indexed by local body.
+  std::span<const std::uint32_t> owners() const { return owner_; }
+  std::span<const ImageShift> shifts() const { return shift_; }
 
  private:
   const RigidMotion* source_ = nullptr;

@@ -4,8 +4,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
-#include <tuple>
 
 namespace ccd {
 namespace {
@@ -25,14 +23,17 @@ struct Stopwatch {
   }
 };
 
-// The narrow phase of every passed pair, with the entry `entry(a, b)` chooses.
-template <class Entry>
-void solve_passed(NarrowInput in, StepResult& out, bool from_earliest, const StepContext& ctx, Entry entry) {
-  for (std::size_t i = 0; i < out.bodies.passed.size(); ++i) {
-    const BodyPair p = out.bodies.passed[i];
-    if (from_earliest) in.t0 = std::max(ctx.t0, std::min(out.bodies.earliest[i], ctx.t1));
+// The narrow phase of each of `pairs`, with the entry `entry(a, b)` chooses; found(i, c)
+// for each pair i in contact, in order.
+template <class Entry, class Found>
+void solve_each(NarrowInput in, std::span<const BodyPair> pairs, std::span<const double> earliest, bool from_earliest,
+                Entry entry, Found& found) {
+  const double t0 = in.t0, t1 = in.t1;
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    const BodyPair p = pairs[i];
+    if (from_earliest) in.t0 = std::max(t0, std::min(earliest[i], t1));
     const ContactResult c = entry(p.a, p.b)(in, p.a, p.b);
-    if (c.found()) out.bodies.contacts.push_back({p, c});
+    if (c.found()) found(i, c);
   }
 }
 
@@ -50,57 +51,54 @@ StepPipeline::StepPipeline(std::unique_ptr<Bound> bound, Knowledge knowledge, st
 
 void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times,
                        std::span<const std::size_t> start_piece) {
-  const RigidMotion& motion = *ctx.motion;
-  if (motion.centres().periodic()) {
-    out.scenery.clear();
-    run_periodic(ctx, out, times);
-    return;
+  if (ctx.motion->centres().periodic()) {
+    if (!images_) images_ = std::make_unique<ImageBodies>();
+    run_stages(*images_, ctx, out, times);
+  } else {
+    PlainBodies plain(start_piece);
+    run_stages(plain, ctx, out, times);
   }
+}
+
+template <class Bodies>
+void StepPipeline::run_stages(Bodies& set, const StepContext& ctx, StepResult& out, StepTimes* times) {
   StepTimes local;
   Stopwatch watch(times != nullptr);
+  BodyStage& bs = out.bodies;
 
   watch.start();
-  if (!start_piece.empty() && ctx.start_piece.empty() && ctx.exact == &motion.centres()) {
-    // The bounds built from the pieces walk from the cursor's pieces instead of searching.
-    StepContext with_pieces = ctx;
-    with_pieces.start_piece = start_piece;
-    bound_->prepare(with_pieces, boxes_);
-  } else {
-    bound_->prepare(ctx, boxes_);
-  }
+  set.prepare(*bound_, ctx, boxes_);
   watch.stop(local.bound);
 
   watch.start();
-  broad_->find_pairs(boxes_, out.bodies.candidates);
+  broad_->find_pairs(boxes_, set.broad_pairs(bs));
+  set.candidates(bs);
   watch.stop(local.broad);
   out.broad_stats = broad_->stats();
 
   watch.start();
-  out.bodies.passed.clear();
-  out.bodies.earliest.clear();
-  bound_->test_pairs(out.bodies.candidates, out.bodies.passed, out.bodies.earliest);
+  bs.passed.clear();
+  bs.earliest.clear();
+  std::vector<BodyPair>& passed = set.test_passed(bs);
+  std::vector<double>& earliest = set.test_earliest(bs);
+  passed.clear();
+  earliest.clear();
+  bound_->test_pairs(set.test_pairs(bs), passed, earliest);
+  set.passed(bs);
   watch.stop(local.bound);
 
   watch.start();
-  out.bodies.contacts.clear();
-  NarrowInput in{&motion, ctx.start, start_piece, ctx.t0, ctx.t1, sample_test()};
-  const bool from_earliest = options_.narrow_from_earliest && !sample_test();
-  // Decided once per step: plain spheres take the sphere x sphere entry looked up once.
-  if (motion.spheres() && !from_earliest && !sample_test() && narrow_.fn == &sphere_sphere_narrow &&
-      !narrow_.swapped) {
-    // Sphere scenes, step queries: the batched exact entry (the same results; a SIMD
-    // filter settles most pairs, ccd/narrow/sphere_sphere_narrow_batch.hpp).
-    batch_results_.resize(out.bodies.passed.size());
-    sphere_sphere_narrow_batch(in, out.bodies.passed, batch_results_);
-    for (std::size_t i = 0; i < out.bodies.passed.size(); ++i)
-      if (batch_results_[i].found()) out.bodies.contacts.push_back({out.bodies.passed[i], batch_results_[i]});
-  } else {
-    narrow_pairs(in, out, from_earliest, ctx);
-  }
+  bs.contacts.clear();
+  const NarrowInput in = set.narrow_input(ctx, sample_test());
+  narrow_stage(in, set.narrow_pairs(bs), set.narrow_earliest(bs),
+               [&](std::size_t i, const ContactResult& c) { set.found(bs, i, c); });
+  set.contacts(bs);
   watch.stop(local.narrow);
 
-  in.t0 = ctx.t0;
-  run_static(ctx, in, out, local, times != nullptr);
+  if constexpr (Bodies::kScenery)
+    run_static(ctx, in, out, local, times != nullptr);
+  else
+    out.scenery.clear();
 
   if (times) {
     times->bound += local.bound;
@@ -109,18 +107,26 @@ void StepPipeline::run(const StepContext& ctx, StepResult& out, StepTimes* times
   }
 }
 
-NarrowEntry StepPipeline::entry(const RigidMotion& motion, std::uint32_t a, std::uint32_t b) const {
-  return motion.spheres() ? narrow_ : table_->find(motion.kind(a), motion.kind(b));
-}
-
-void StepPipeline::narrow_pairs(const NarrowInput& in, StepResult& out, bool from_earliest,
-                                const StepContext& ctx) const {
+template <class Found>
+void StepPipeline::narrow_stage(const NarrowInput& in, std::span<const BodyPair> pairs,
+                                std::span<const double> earliest, Found found) {
   const RigidMotion& motion = *in.motion;
-  if (motion.spheres()) {
-    solve_passed(in, out, from_earliest, ctx, [&](std::uint32_t, std::uint32_t) { return narrow_; });
+  const bool from_earliest = options_.narrow_from_earliest && !in.sample;
+  // Decided once per step: plain spheres take the sphere x sphere entry looked up once.
+  if (motion.spheres() && !from_earliest && !in.sample && narrow_.fn == &sphere_sphere_narrow && !narrow_.swapped) {
+    // Sphere scenes, step queries: the batched exact entry (the same results; a SIMD
+    // filter settles most pairs, ccd/narrow/sphere_sphere_narrow_batch.hpp).
+    batch_results_.resize(pairs.size());
+    sphere_sphere_narrow_batch(in, pairs, batch_results_);
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      if (batch_results_[i].found()) found(i, batch_results_[i]);
+  } else if (motion.spheres()) {
+    solve_each(in, pairs, earliest, from_earliest, [&](std::uint32_t, std::uint32_t) { return narrow_; }, found);
   } else {
-    solve_passed(in, out, from_earliest, ctx,
-                 [&](std::uint32_t a, std::uint32_t b) { return table_->find(motion.kind(a), motion.kind(b)); });
+    const auto by_kinds = [&](std::uint32_t a, std::uint32_t b) {
+      return table_->find(motion.kind(a), motion.kind(b));
+    };
+    solve_each(in, pairs, earliest, from_earliest, by_kinds, found);
   }
 }
 
@@ -174,83 +180,6 @@ void StepPipeline::run_static(const StepContext& ctx, const NarrowInput& in, Ste
     }
   }
   watch.stop(local.narrow);
-}
-
-void StepPipeline::run_periodic(const StepContext& ctx, StepResult& out, StepTimes* times) {
-  StepTimes local;
-  Stopwatch watch(times != nullptr);
-  if (!images_) images_ = std::make_unique<PeriodicImages>();
-  PeriodicImages& im = *images_;
-
-  watch.start();
-  bound_->prepare(im.begin(ctx), boxes_);
-  if (im.add_images(boxes_)) bound_->prepare(im.context(), boxes_);
-  watch.stop(local.bound);
-
-  watch.start();
-  broad_->find_pairs(boxes_, local_pairs_);
-  watch.stop(local.broad);
-  out.broad_stats = broad_->stats();
-
-  // Image pairs -> (a, b, relative shift), each once.
-  image_pairs_.clear();
-  for (const BodyPair& p : local_pairs_) {
-    std::uint32_t x = p.a, y = p.b;
-    std::uint32_t a = im.owner(x), b = im.owner(y);
-    if (a == b) continue;
-    if (a > b) {
-      std::swap(a, b);
-      std::swap(x, y);
-    }
-    const ImageShift& sx = im.shift(x);
-    const ImageShift& sy = im.shift(y);
-    image_pairs_.push_back({a, b, ImageShift{sy[0] - sx[0], sy[1] - sx[1], sy[2] - sx[2]}, x, y});
-  }
-  auto key = [](const ImagePair& q) { return std::tie(q.a, q.b, q.shift); };
-  std::sort(image_pairs_.begin(), image_pairs_.end(), [&](const ImagePair& p, const ImagePair& q) { return key(p) < key(q); });
-  image_pairs_.erase(std::unique(image_pairs_.begin(), image_pairs_.end(),
-                                 [&](const ImagePair& p, const ImagePair& q) { return key(p) == key(q); }),
-                     image_pairs_.end());
-
-  PairStage<BodyPair, PairContact>& bs = out.bodies;
-  bs.clear();
-  // The local bodies' motion: their owners' shapes and spins on the unwrapped paths.
-  const RigidMotion& local_motion = im.motion();
-  const NarrowInput base{&local_motion, im.context().start, {}, ctx.t0, ctx.t1, sample_test()};
-  const bool from_earliest = options_.narrow_from_earliest && !sample_test();
-  for (std::size_t i = 0; i < image_pairs_.size();) {
-    const std::uint32_t a = image_pairs_[i].a, b = image_pairs_[i].b;
-    bs.candidates.push_back({a, b});
-    bool passed = false;
-    std::optional<ContactResult> best;
-    for (; i < image_pairs_.size() && image_pairs_[i].a == a && image_pairs_[i].b == b; ++i) {
-      const ImagePair& q = image_pairs_[i];
-      watch.start();
-      const PairTest t = bound_->test(std::min(q.x, q.y), std::max(q.x, q.y));
-      watch.stop(local.bound);
-      if (!t.possible()) continue;
-      if (!passed) {
-        bs.passed.push_back({a, b});
-        bs.earliest.push_back(t.earliest);
-        passed = true;
-      } else {
-        bs.earliest.back() = std::min(bs.earliest.back(), t.earliest);
-      }
-      watch.start();
-      NarrowInput in = base;
-      if (from_earliest) in.t0 = std::max(ctx.t0, std::min(t.earliest, ctx.t1));
-      const ContactResult c = entry(local_motion, q.x, q.y)(in, q.x, q.y);
-      watch.stop(local.narrow);
-      if (c.found() && (!best || c.toi < best->toi)) best = c;
-    }
-    if (best) bs.contacts.push_back({BodyPair{a, b}, *best});
-  }
-
-  if (times) {
-    times->bound += local.bound;
-    times->broad += local.broad;
-    times->narrow += local.narrow;
-  }
 }
 
 }  // namespace ccd

@@ -37,13 +37,21 @@
 //     broad, bound and narrow times. Bounds see a rigid body as its enclosing sphere
 //     (or their own oriented volume); the narrow phase sees its shape. Periodic scenes run
 //     no static stages.
-// Periodic scenes (`ctx.motion->centres().periodic()`): the same stages over the bodies and their images
-// (pipeline/periodic_images.hpp; the bound is prepared twice when some body has an
-// image), each candidate image pair tested and solved with its shift, and reported as the
-// pair of bodies: once per pair in `bodies.candidates` and `bodies.passed` (earliest: the least
-// over its image pairs) and in `bodies.contacts` (the earliest contact over its image pairs). Each image
-// keeps its body's shape and spin (the local motion, PeriodicImages::motion), and the
-// narrow table entry is chosen as for the bodies.
+// The stages are written once (StepPipeline::run_stages) over a body set
+// (pipeline/step_bodies.hpp), which says which pairs each stage works on and how its
+// answers come back as body pairs. PlainBodies: the scene's bodies, each candidate its own
+// test pair and narrow pair. ImageBodies, for a scene that wraps around
+// (`ctx.motion->centres().periodic()`): the bodies and their images are the local bodies
+// (pipeline/periodic_images.hpp; the bound is prepared twice when some body has an image),
+// the broad phase runs over them, and its pairs are grouped into image pairs (owners and
+// relative shift) per body pair (pipeline/image_pairs.hpp). Stage 3 tests every image
+// pair (through bound.test_pairs); a body pair passes when any of its image pairs passes,
+// `earliest` the least over them. Stage 4 solves every passing image pair (from its own
+// `earliest` with narrow_from_earliest) and keeps the earliest contact per body pair. So a
+// body pair is reported once in `bodies.candidates`, `bodies.passed` and
+// `bodies.contacts`, in order of (a, b). Each image keeps its body's shape and spin (the
+// local motion, PeriodicImages::motion), and the narrow entry is chosen as for the bodies
+// (plain spheres' step queries batched as above). Periodic scenes run no static stages.
 // Stages 3 and 4 run as two passes so that each is timed once per step, not per pair.
 // The narrow phase starts at t0 for every pair by default. With
 // PipelineOptions::narrow_from_earliest it starts at the pair test's `earliest` instead
@@ -57,7 +65,7 @@
 #include <pipeline/kinematic_order.hpp>
 #include <pipeline/pair_stage.hpp>
 #include <ccd/broad_phase/static_index.hpp>
-#include <pipeline/periodic_images.hpp>
+#include <pipeline/step_bodies.hpp>
 #include <ccd/scene/scenery.hpp>
 
 #include <memory>
@@ -70,17 +78,6 @@ struct StepTimes {
   double bound = 0.0;   ///< prepare + pair tests
   double broad = 0.0;   ///< find_pairs
   double narrow = 0.0;  ///< narrow phase over the passed pairs
-};
-
-struct PairContact {
-  BodyPair pair;
-  ContactResult contact;
-};
-
-/// A body's contact with a static polygon found by the narrow phase.
-struct StaticContact {
-  StaticPair pair;
-  ContactResult contact;
 };
 
 /// One step's stages for the body pairs and for the body-polygon pairs
@@ -127,16 +124,18 @@ class StepPipeline {
   const std::vector<Aabb>& boxes() const { return boxes_; }
 
  private:
-  // Periodic scenes: the step over the bodies and their images, mapped back to body pairs.
-  void run_periodic(const StepContext& ctx, StepResult& out, StepTimes* times);
-  struct ImagePair {
-    std::uint32_t a, b;  // bodies, a < b
-    ImageShift shift;    // of b's image relative to a's
-    std::uint32_t x, y;  // local bodies (owners a and b)
-  };
-  std::unique_ptr<PeriodicImages> images_;
-  std::vector<BodyPair> local_pairs_;
-  std::vector<ImagePair> image_pairs_;
+  // The stages, written once over a body set (pipeline/step_bodies.hpp): PlainBodies or,
+  // for a scene that wraps around, ImageBodies.
+  template <class Bodies>
+  void run_stages(Bodies& set, const StepContext& ctx, StepResult& out, StepTimes* times);
+  // Stage 4 over `pairs` (with their `earliest`): found(i, contact) for each pair i in
+  // contact, in order. Decided once per call: plain spheres' step queries go through the
+  // batched exact entry, else the narrow table's entries pair by pair (narrow_ for plain
+  // spheres, by the pair's kinds otherwise).
+  template <class Found>
+  void narrow_stage(const NarrowInput& in, std::span<const BodyPair> pairs, std::span<const double> earliest,
+                    Found found);
+  std::unique_ptr<ImageBodies> images_;  // made by the first step of a scene that wraps around
   std::unique_ptr<Bound> bound_;
   Knowledge knowledge_;
   PipelineOptions options_;
@@ -145,11 +144,6 @@ class StepPipeline {
   NarrowEntry narrow_;
   std::vector<Aabb> boxes_;
   std::vector<ContactResult> batch_results_;  // the batched narrow phase's answers, per passed pair
-  // The entry for one pair: narrow_ for plain spheres, else by the pair's kinds.
-  NarrowEntry entry(const RigidMotion& motion, std::uint32_t a, std::uint32_t b) const;
-  // The narrow table's entries pair by pair (shaped or spinning bodies, sample tests,
-  // narrow_from_earliest).
-  void narrow_pairs(const NarrowInput& in, StepResult& out, bool from_earliest, const StepContext& ctx) const;
   // Scenery.
   void run_static(const StepContext& ctx, const NarrowInput& in, StepResult& out, StepTimes& local, bool timed);
   std::span<const StaticPolygon> scenery_;
