@@ -84,8 +84,8 @@ Item make_item(const Aabb& b, int ax, int a1, std::uint32_t id, std::array<std::
 // a cell: bit 0 set when the cell is in the item's first slab on the slab axis, bit 1 on
 // the third axis. Built in `parts` contiguous parts of `items` on the threads (the layout
 // does not depend on them).
-void place_in_cells(const std::vector<Item>& items, const SweepLayout& layout, unsigned threads,
-                    std::vector<MeshSweep::SlabItem>& out, std::vector<std::size_t>& offsets) {
+void place_in_cells(const DefaultInitVector<Item>& items, const SweepLayout& layout, unsigned threads,
+                    DefaultInitVector<MeshSweep::SlabItem>& out, std::vector<std::size_t>& offsets) {
   const std::size_t n = items.size(), S2 = layout.slabs2.count, lists = 4 * layout.cells();
   // At most 8 parts: each holds a count per list.
   const std::size_t parts =
@@ -93,7 +93,7 @@ void place_in_cells(const std::vector<Item>& items, const SweepLayout& layout, u
   std::vector<std::vector<std::size_t>> counts(parts, std::vector<std::size_t>(lists + 1, 0));
   auto range = [&](std::size_t p) { return std::pair{n * p / parts, n * (p + 1) / parts}; };
   // Each item's first and last slab on both axes.
-  std::vector<std::array<std::uint32_t, 4>> spans(n);
+  DefaultInitVector<std::array<std::uint32_t, 4>> spans(n);
   // f(list) for each list of item i.
   auto for_lists = [&](std::size_t i, auto&& f) {
     const auto [f1, l1, f2, l2] = spans[i];
@@ -189,10 +189,10 @@ Halves make_halves(const Aabb& early, const Aabb& late, int ax) {
   Halves h{};
   for (int k = 0; k < 3; ++k) {
     const int a = (ax + k) % 3;
-    h.lo[0][k] = early.lo[a];
-    h.hi[0][k] = early.hi[a];
-    h.lo[1][k] = late.lo[a];
-    h.hi[1][k] = late.hi[a];
+    h.half[0].lo[k] = early.lo[a];
+    h.half[0].hi[k] = early.hi[a];
+    h.half[1].lo[k] = late.lo[a];
+    h.half[1].hi[k] = late.hi[a];
   }
   return h;
 }
@@ -221,7 +221,7 @@ struct PrimitiveSet {
       std::uint64_t bits;
       std::size_t pos;
     };
-    std::vector<Rec> a(n), b(n);
+    DefaultInitVector<Rec> a(n), b(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double x = keys[i].first + 0.0;  // -0 -> +0
       std::uint64_t u;
@@ -248,7 +248,7 @@ struct PrimitiveSet {
   }
   // fill(i, item, halves or nullptr) builds primitive i.
   template <class Fill>
-  void build(std::vector<Item>& items, std::vector<Halves>& halves, bool with_halves, unsigned threads,
+  void build(DefaultInitVector<Item>& items, DefaultInitVector<Halves>& halves, bool with_halves, unsigned threads,
              Fill&& fill) const {
     const std::size_t n = keys.size();
     items.resize(n);
@@ -288,6 +288,17 @@ inline bool overlap_others(const A& a, const B& b) {
 }
 
 inline bool overlap_all(const Item& a, const Item& b) { return a.lo <= b.hi && b.lo <= a.hi && overlap_others(a, b); }
+
+// Whether the boxes over [0, 1/2] overlap, or those over [1/2, 1].
+inline bool halves_overlap(const Halves& a, const Halves& b) {
+  for (int h = 0; h < 2; ++h) {
+    const Halves::Box &p = a.half[h], &q = b.half[h];
+    if ((p.lo[0] <= q.hi[0]) & (q.lo[0] <= p.hi[0]) & (p.lo[1] <= q.hi[1]) & (q.lo[1] <= p.hi[1]) &
+        (p.lo[2] <= q.hi[2]) & (q.lo[2] <= p.hi[2]))
+      return true;
+  }
+  return false;
+}
 
 }  // namespace
 
@@ -341,14 +352,6 @@ void MeshSweep::prepare(const ClothMesh& mesh, std::span<const Vec3> x0, std::sp
   vertex_chunks_ = chunks_of(slab_vertices_.size());
 }
 
-bool MeshSweep::halves_overlap(const Halves& a, const Halves& b) const {
-  for (int h = 0; h < 2; ++h) {
-    bool all = true;
-    for (int k = 0; k < 3; ++k) all &= (a.lo[h][k] <= b.hi[h][k]) & (b.lo[h][k] <= a.hi[h][k]);
-    if (all) return true;
-  }
-  return false;
-}
 
 void MeshSweep::sweep(std::size_t chunk, std::span<Candidate> buffer, const Sink& sink) const {
   // Edge chunks first: they are the heaviest, and dynamic scheduling ends better with

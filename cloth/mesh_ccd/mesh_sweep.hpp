@@ -38,6 +38,7 @@
 // in blocks of a buffer the caller owns (streamed: never all held), each candidate in
 // exactly one chunk. The chunks and cells do not depend on the thread count.
 #include <cloth/cull/candidate.hpp>
+#include <cloth/mesh_ccd/default_init.hpp>
 
 #include <array>
 #include <cstdint>
@@ -106,26 +107,28 @@ class MeshSweep {
     std::uint32_t pos;
     std::array<std::uint32_t, 3> v;
   };
-  /// The two half-interval boxes of an item, in the same axis order.
+  /// The two half-interval boxes of an item, in the same axis order: half[0] over [0, 1/2],
+  /// half[1] over [1/2, 1].
   struct Halves {
-    double lo[2][3], hi[2][3];
+    struct Box {
+      double lo[3], hi[3];
+    } half[2];
   };
 
  private:
   void sweep_faces(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
   void sweep_vertices(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
   void sweep_edges(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
-  bool halves_overlap(const Halves& a, const Halves& b) const;
 
   int axis_ = 0, slab_axis_ = 1;
   std::size_t slabs_ = 1, slabs2_ = 1;
   // Per set: the cells' lists of items, concatenated (list cell * 4 + class at
   // [offsets[list], offsets[list + 1]), cell = slab * slabs2 + slab on the third axis).
-  std::vector<SlabItem> slab_vertices_, slab_faces_, slab_edges_;
+  DefaultInitVector<SlabItem> slab_vertices_, slab_faces_, slab_edges_;
   std::vector<std::size_t> vertex_offsets_, face_offsets_, edge_offsets_;
   bool time_halves_ = true;
-  std::vector<Item> vertices_, faces_, edges_;  // sorted by (lo, id)
-  std::vector<Halves> vertex_halves_, face_halves_, edge_halves_;  // in the same orders
+  DefaultInitVector<Item> vertices_, faces_, edges_;  // sorted by (lo, id)
+  DefaultInitVector<Halves> vertex_halves_, face_halves_, edge_halves_;  // in the same orders
   std::size_t face_chunks_ = 0, vertex_chunks_ = 0, edge_chunks_ = 0;
 };
 
