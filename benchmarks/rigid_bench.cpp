@@ -12,7 +12,7 @@
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/conservative_advancement.hpp>
 #include <ccd/queries/convex_distance.hpp>
-#include <ccd/truth/rigid_truth.hpp>
+#include <ccd/truth/truth.hpp>
 
 #include <Eigen/Geometry>
 #include <benchmark/benchmark.h>
@@ -122,11 +122,11 @@ void rigid_truth_crates(benchmark::State& state) {
   const ccd::Scene s = crates(2000);
   const ccd::Trajectories traj(s);
   const ccd::RigidMotion motion(s, traj);
-  ccd::RigidTruthOptions o;
+  ccd::TruthOptions o;
   o.threads = 1;
-  ccd::RigidTruthResult r;
+  ccd::Truth r;
   for (auto _ : state) {
-    r = ccd::compute_rigid_truth(motion, o);
+    r = ccd::compute_truth(motion, {}, o);
     benchmark::DoNotOptimize(r);
   }
   state.counters["events"] = static_cast<double>(r.events.size());

@@ -88,14 +88,19 @@ void report(benchmark::State& state, double cpu, double wall, const Costs& c) {
   state.counters["contacts"] = c.contacts;
 }
 
-// One run of the scheduler `schedule` ("fixed", "earliest:stale=1", ...) of `method` over the
-// horizon, windows or steps of dt.
-void run(benchmark::State& state, const Fixture& (*scene)(), std::string method, std::string schedule, double dt) {
+// The parts of a method, each named as its registry reads it.
+struct Method {
+  const char* bound;     ///< "capsule" (bounds/registry.hpp)
+  const char* broad;     ///< "grid" (ccd/broad_phase/registry.hpp)
+  const char* schedule;  ///< "fixed", "earliest:stale=1", ... (pipeline/scheduler_registry.hpp)
+};
+
+// One run of the scheduler of `method` over the horizon, windows or steps of dt.
+void run(benchmark::State& state, const Fixture& (*scene)(), Method method, double dt) {
   const Fixture& f = scene();
-  const std::size_t slash = method.find('/');
-  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
-  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
-  const ccd::SchedulerSpec spec = ccd::parse_scheduler(schedule);
+  const ccd::BoundSpec bound = ccd::parse_bound(method.bound);
+  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.broad);
+  const ccd::SchedulerSpec spec = ccd::parse_scheduler(method.schedule);
   ccd::ScheduleInput in;
   in.motion = &f.motion;
   in.horizon = f.scene.horizon;
@@ -116,29 +121,31 @@ void run(benchmark::State& state, const Fixture& (*scene)(), std::string method,
 }
 
 void register_all() {
-  const auto add = [](const char* name, const Fixture& (*scene)(), const char* method, const char* schedule,
-                      double dt) {
-    benchmark::RegisterBenchmark(name, run, scene, std::string(method), std::string(schedule), dt)
+  const auto add = [](const char* name, const Fixture& (*scene)(), Method method, double dt) {
+    benchmark::RegisterBenchmark(name, run, scene, method, dt)
         ->UseManualTime()
         ->Unit(benchmark::kMillisecond);
   };
   // Sparse gas: the fixed methods' best dt is the horizon (one bound per body).
-  add("sparse_gas/fixed/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", "fixed", 1.0);
-  add("sparse_gas/fixed/capsule/grid/dt=1", sparse_gas, "capsule/grid", "fixed", 1.0);
-  add("sparse_gas/earliest/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest", 1.0);
-  add("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest:recheck=1", 1.0);
-  add("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas, "capsule/grid",
-      "earliest:recheck=1,chunk=0", 1.0);
-  add("sparse_gas/earliest:stale=1/capsule/grid/dt=1", sparse_gas, "capsule/grid", "earliest:stale=1", 1.0);
-  add("sparse_gas/earliest:stale=1/swept_aabb/grid/dt=1", sparse_gas, "swept_aabb/grid", "earliest:stale=1", 1.0);
+  add("sparse_gas/fixed/swept_aabb/grid/dt=1", sparse_gas, {"swept_aabb", "grid", "fixed"}, 1.0);
+  add("sparse_gas/fixed/capsule/grid/dt=1", sparse_gas, {"capsule", "grid", "fixed"}, 1.0);
+  add("sparse_gas/earliest/capsule/grid/dt=1", sparse_gas, {"capsule", "grid", "earliest"}, 1.0);
+  add("sparse_gas/earliest:recheck=1/capsule/grid/dt=1", sparse_gas,
+      {"capsule", "grid", "earliest:recheck=1"}, 1.0);
+  add("sparse_gas/earliest:recheck=1,chunk=0/capsule/grid/dt=1", sparse_gas,
+      {"capsule", "grid", "earliest:recheck=1,chunk=0"}, 1.0);
+  add("sparse_gas/earliest:stale=1/capsule/grid/dt=1", sparse_gas, {"capsule", "grid", "earliest:stale=1"},
+      1.0);
+  add("sparse_gas/earliest:stale=1/swept_aabb/grid/dt=1", sparse_gas,
+      {"swept_aabb", "grid", "earliest:stale=1"}, 1.0);
   // Bullets: fixed steps need a dt small enough for the bullets.
-  add("bullets/fixed/capsule/grid/dt=0.03", bullets, "capsule/grid", "fixed", 0.03);
-  add("bullets/fixed/capsule/grid/dt=0.01", bullets, "capsule/grid", "fixed", 0.01);
-  add("bullets/earliest:reach=16/capsule/grid/dt=1", bullets, "capsule/grid", "earliest:reach=16", 1.0);
-  add("bullets/earliest:reach=16,recheck=1/capsule/grid/dt=1", bullets, "capsule/grid",
-      "earliest:reach=16,recheck=1", 1.0);
-  add("bullets/earliest:reach=16,recheck=1,chunk=0/capsule/grid/dt=1", bullets, "capsule/grid",
-      "earliest:reach=16,recheck=1,chunk=0", 1.0);
+  add("bullets/fixed/capsule/grid/dt=0.03", bullets, {"capsule", "grid", "fixed"}, 0.03);
+  add("bullets/fixed/capsule/grid/dt=0.01", bullets, {"capsule", "grid", "fixed"}, 0.01);
+  add("bullets/earliest:reach=16/capsule/grid/dt=1", bullets, {"capsule", "grid", "earliest:reach=16"}, 1.0);
+  add("bullets/earliest:reach=16,recheck=1/capsule/grid/dt=1", bullets,
+      {"capsule", "grid", "earliest:reach=16,recheck=1"}, 1.0);
+  add("bullets/earliest:reach=16,recheck=1,chunk=0/capsule/grid/dt=1", bullets,
+      {"capsule", "grid", "earliest:reach=16,recheck=1,chunk=0"}, 1.0);
 }
 
 }  // namespace

@@ -32,6 +32,7 @@
 #include <ccd/io/atomic_file.hpp>
 #include <ccd/util/integer_text.hpp>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <sys/resource.h>
@@ -47,7 +48,6 @@
 #include <ctime>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -224,227 +224,273 @@ const char* status_name(int s) {
 
 bool is_ccdlab(const PeerInfo& p) { return p.library == "ccdlab"; }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+struct Options {
   std::vector<std::size_t> sizes = {1000, 10000, 100000, 1000000};
-  std::vector<std::string> only;
+  std::vector<std::string> only;  ///< --methods (empty: all)
   std::string json_path;
   double max_frame_s = 2.0;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&](const char* flag) -> const char* {
-      const std::size_t len = std::strlen(flag);
-      if (a.compare(0, len, flag) != 0) return nullptr;
-      if (a.size() > len && a[len] == '=') return argv[i] + len + 1;
-      if (a.size() == len && i + 1 < argc) return argv[++i];
-      return nullptr;
-    };
-    if (const char* v = value("--sizes")) {
-      const auto list = ccd::parse_integer_list(v, 1, 100000000);
-      if (!list) {
-        std::fprintf(stderr, "peers_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=1000,10000\n");
-        return 2;
-      }
-      sizes.assign(list->begin(), list->end());
-    } else if (const char* v = value("--methods")) {
-      std::stringstream ss(v);
-      std::string item;
-      while (std::getline(ss, item, ',')) only.push_back(item);
-    } else if (const char* v = value("--json")) {
-      json_path = v;
-    } else if (const char* v = value("--max-frame-s")) {
-      max_frame_s = std::stod(v);
-    } else {
-      std::fprintf(stderr,
-                   "usage: peers_bench [--sizes=1000,10000,100000,1000000] [--methods=a,b] [--json OUT.json] "
-                   "[--max-frame-s=2]\n");
-      return 2;
-    }
-  }
-  std::sort(sizes.begin(), sizes.end());
+};
 
+// The options, or exit 2 with one line naming the bad one.
+Options parse_options(int argc, char** argv) {
+  Options o;
+  std::string sizes;
+  CLI::App app(
+      "ccdlab's broad phases side by side with FCL, Bullet and Boost.Geometry on the shared\n"
+      "moving-spheres scene (docs/peers.md).",
+      "peers_bench");
+  app.add_option("--sizes", sizes, "body counts, comma-separated (default 1000,10000,100000,1000000)");
+  app.add_option("--methods", o.only, "methods to run, comma-separated (default: all)")->delimiter(',');
+  app.add_option("--json", o.json_path, "also write the results to this JSON file");
+  app.add_option("--max-frame-s", o.max_frame_s, "skip a method whose projected frame exceeds this (s)")
+      ->check(CLI::Range(0.001, 86400.0));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::printf("%s", app.help().c_str());
+    std::exit(0);
+  } catch (const CLI::ParseError& e) {
+    std::fprintf(stderr, "peers_bench: %s (peers_bench --help lists the options)\n", e.what());
+    std::exit(2);
+  }
+  if (!sizes.empty()) {
+    const auto list = ccd::parse_integer_list(sizes, 1, 100000000);
+    if (!list) {
+      std::fprintf(stderr, "peers_bench: --sizes needs integers in [1, 1e8], e.g. --sizes=1000,10000\n");
+      std::exit(2);
+    }
+    o.sizes.assign(list->begin(), list->end());
+  }
+  std::sort(o.sizes.begin(), o.sizes.end());
+  return o;
+}
+
+// Every method of every library, or those --methods names.
+std::vector<PeerInfo> select_methods(const std::vector<std::string>& only) {
   std::vector<PeerInfo> methods;
   for (auto* group : {&ccdlab::peers::ccdlab_methods, &ccdlab::peers::fcl_peers, &ccdlab::peers::bullet_peers,
                       &ccdlab::peers::boost_peers})
     for (PeerInfo& p : (*group)())
-      if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end()) methods.push_back(std::move(p));
-  if (methods.empty()) {
-    std::fprintf(stderr, "peers_bench: no method matches --methods\n");
-    return 2;
-  }
+      if (only.empty() || std::find(only.begin(), only.end(), p.name) != only.end())
+        methods.push_back(std::move(p));
+  return methods;
+}
 
-  if (!json_path.empty()) {
-    // The folder of --json is made (and checked) now, not after minutes of work.
-    const std::filesystem::path folder = std::filesystem::path(json_path).parent_path();
-    std::error_code ec;
-    if (!folder.empty()) std::filesystem::create_directories(folder, ec);
-    if (ec || (!folder.empty() && ::access(folder.c_str(), W_OK) != 0)) {
-      std::fprintf(stderr, "peers_bench: --json %s: cannot write into folder %s\n", json_path.c_str(),
-                   folder.c_str());
-      return 2;
-    }
-  }
-  const double max_frame_ms = max_frame_s * 1e3;
-  nlohmann::json results = nlohmann::json::array();
-  nlohmann::json references = nlohmann::json::array();
-  // Last measured size per method, to project the next one.
-  std::map<std::string, std::pair<std::size_t, RunResult>> last;
-  std::map<std::string, std::map<std::size_t, RunResult>> table;
-  bool all_exact = true;
+// The folder of --json is made (and checked) before the work, not after minutes of it.
+bool json_folder_writable(const std::string& json_path) {
+  const std::filesystem::path folder = std::filesystem::path(json_path).parent_path();
+  std::error_code ec;
+  if (!folder.empty()) std::filesystem::create_directories(folder, ec);
+  return !ec && (folder.empty() || ::access(folder.c_str(), W_OK) == 0);
+}
 
-  for (const std::size_t n : sizes) {
-    // Reference pairs for frames 0..22.
-    std::vector<FrameRef> ref(kFrames);
+// The reference pair count and checksum of frames 0..22 at size n.
+std::vector<FrameRef> reference_frames(std::size_t n, bool use_brute) {
+  std::vector<FrameRef> ref(kFrames);
+  ccdlab::bench::PeerScene scene(n, 1);
+  std::vector<ccd::Aabb> boxes;
+  std::vector<ccd::BodyPair> pairs;
+  ccd::BruteForce brute;
+  ccd::UniformGrid grid;
+  for (int f = 0; f < kFrames; ++f) {
+    if (f > 0) scene.step();
+    scene.boxes(boxes);
+    if (use_brute)
+      brute.find_pairs(boxes, pairs);
+    else
+      grid.find_pairs(boxes, pairs);
+    ref[f] = {pairs.size(), ccdlab::bench::peer_pair_checksum(pairs)};
+  }
+  return ref;
+}
+
+// Runs every method at every size, prints the tables and keeps the results.
+class Session {
+ public:
+  Session(const Options& options, std::vector<PeerInfo> methods)
+      : o_(options), methods_(std::move(methods)) {}
+
+  void run_size(std::size_t n) {
     const bool use_brute = n <= 10000;
-    {
-      ccdlab::bench::PeerScene scene(n, 1);
-      std::vector<ccd::Aabb> boxes;
-      std::vector<ccd::BodyPair> pairs;
-      ccd::BruteForce brute;
-      ccd::UniformGrid grid;
-      for (int f = 0; f < kFrames; ++f) {
-        if (f > 0) scene.step();
-        scene.boxes(boxes);
-        if (use_brute)
-          brute.find_pairs(boxes, pairs);
-        else
-          grid.find_pairs(boxes, pairs);
-        ref[f] = {pairs.size(), ccdlab::bench::peer_pair_checksum(pairs)};
-      }
-    }
+    const std::vector<FrameRef> ref = reference_frames(n, use_brute);
     std::string published = "not tabulated";
     for (const auto& p : ccdlab::bench::peer_scene_references())
       if (p.n == n) {
         const bool ok = ref[0].pairs == p.pairs_0 && ref[0].checksum == p.checksum_0 &&
                         ref[kFrames - 1].pairs == p.pairs_22 && ref[kFrames - 1].checksum == p.checksum_22;
         published = ok ? "frames 0 and 22 match the published table" : "DIFFERS from the published table";
-        all_exact = all_exact && ok;
+        all_exact_ = all_exact_ && ok;
       }
     const std::string load0 = load_average();
     std::printf("\nN = %zu  (reference: %s, %s; load average %s)\n", n, use_brute ? "brute force" : "grid",
                 published.c_str(), load0.c_str());
     std::printf("%-30s %-28s %10s %10s %10s %10s %11s %9s  %s\n", "method", "library", "cpu ms", "wall ms",
                 "min cpu", "setup ms", "pairs/frame", "peak MB", "status");
-    nlohmann::json ref_json = {{"n", n}, {"reference", use_brute ? "brute" : "grid"}, {"published", published},
+    nlohmann::json ref_json = {{"n", n},
+                               {"reference", use_brute ? "brute" : "grid"},
+                               {"published", published},
                                {"load_average_start", load0}};
-    for (const PeerInfo& info : methods) {
-      RunResult r;
-      std::string why;
-      if (auto it = last.find(info.name); it != last.end()) {
-        const auto& [n0, r0] = it->second;
-        const double scale = static_cast<double>(n) / static_cast<double>(n0);
-        if (r0.status == RunResult::kSkipped) {
-          why = "skipped at N=" + std::to_string(n0);
-        } else if (r0.median_cpu_ms * scale > max_frame_ms) {
-          why = "projected " + std::to_string(r0.median_cpu_ms * scale / 1e3) + " s/frame from N=" + std::to_string(n0);
-        } else if (info.quadratic_setup && r0.setup_ms * scale * scale > 10 * max_frame_ms) {
-          why = "quadratic setup: projected " + std::to_string(r0.setup_ms * scale * scale / 1e3) + " s from N=" +
-                std::to_string(n0);
-        }
-      }
-      if (!why.empty()) {
-        r.status = RunResult::kSkipped;
-        set_message(r, why);
-      } else {
-        r = run_isolated(info, n, ref, max_frame_ms);
-        last[info.name] = {n, r};
-      }
-      table[info.name][n] = r;
-      if (r.status == RunResult::kMismatch || r.status == RunResult::kCrashed) all_exact = false;
-      const bool filtered = r.reported_per_frame > r.pairs_per_frame;
-      std::string status = status_name(r.status);
-      if (r.status == RunResult::kOk && filtered) {
-        char buf[96];
-        std::snprintf(buf, sizeof buf, "ok, filtered from %.0f reported", r.reported_per_frame);
-        status = buf;
-      }
-      if (r.message[0]) status += std::string(" (") + r.message + ")";
-      if (r.status == RunResult::kOk)
-        std::printf("%-30s %-28s %10.3f %10.3f %10.3f %10.1f %11.1f %9.1f  %s\n", info.name.c_str(),
-                    info.library.c_str(), r.median_cpu_ms, r.median_wall_ms, r.min_cpu_ms, r.setup_ms,
-                    r.pairs_per_frame, r.peak_mb, status.c_str());
-      else
-        std::printf("%-30s %-28s %10s %10s %10s %10s %11s %9s  %s\n", info.name.c_str(), info.library.c_str(), "-",
-                    "-", "-", "-", "-", "-", status.c_str());
-      std::fflush(stdout);
-      nlohmann::json j = {{"method", info.name},
-                          {"library", info.library},
-                          {"note", info.note},
-                          {"n", n},
-                          {"status", status_name(r.status)},
-                          {"message", r.message}};
-      if (r.status == RunResult::kOk)
-        j.update({{"median_cpu_ms", r.median_cpu_ms},
-                  {"min_cpu_ms", r.min_cpu_ms},
-                  {"median_wall_ms", r.median_wall_ms},
-                  {"setup_wall_ms", r.setup_ms},
-                  {"pairs_per_frame", r.pairs_per_frame},
-                  {"reported_pairs_per_frame", r.reported_per_frame},
-                  {"filtered_to_exact", filtered},
-                  {"peak_mb", r.peak_mb},
-                  {"frames_verified", r.frames_verified}});
-      results.push_back(j);
-    }
+    for (const PeerInfo& info : methods_) run_method(info, n, ref);
     ref_json["load_average_end"] = load_average();
-    references.push_back(ref_json);
+    references_.push_back(ref_json);
   }
 
-  // Summary: fastest ccdlab method vs fastest peer per size (median CPU ms/frame).
-  std::printf("\nMedian thread-CPU ms/frame (wall ms in brackets)\n%-30s", "method");
-  for (std::size_t n : sizes) std::printf(" %20zu", n);
-  std::printf("\n");
-  for (const PeerInfo& info : methods) {
-    std::printf("%-30s", info.name.c_str());
-    for (std::size_t n : sizes) {
-      const RunResult& r = table[info.name][n];
-      char buf[48];
-      if (r.status == RunResult::kOk)
-        std::snprintf(buf, sizeof buf, "%.3g [%.3g]", r.median_cpu_ms, r.median_wall_ms);
-      else
-        std::snprintf(buf, sizeof buf, "%s", status_name(r.status));
-      std::printf(" %20s", buf);
-    }
+  // Fastest ccdlab method against the fastest peer per size (median CPU ms/frame).
+  nlohmann::json summary() {
+    std::printf("\nMedian thread-CPU ms/frame (wall ms in brackets)\n%-30s", "method");
+    for (std::size_t n : o_.sizes) std::printf(" %20zu", n);
     std::printf("\n");
-  }
-  nlohmann::json summary = nlohmann::json::array();
-  for (std::size_t n : sizes) {
-    const PeerInfo* best_own = nullptr;
-    const PeerInfo* best_peer = nullptr;
-    for (const PeerInfo& info : methods) {
-      const RunResult& r = table[info.name][n];
-      if (r.status != RunResult::kOk) continue;
-      const PeerInfo*& best = is_ccdlab(info) ? best_own : best_peer;
-      if (!best || r.median_cpu_ms < table[best->name][n].median_cpu_ms) best = &info;
+    for (const PeerInfo& info : methods_) {
+      std::printf("%-30s", info.name.c_str());
+      for (std::size_t n : o_.sizes) {
+        const RunResult& r = table_[info.name][n];
+        char buf[48];
+        if (r.status == RunResult::kOk)
+          std::snprintf(buf, sizeof buf, "%.3g [%.3g]", r.median_cpu_ms, r.median_wall_ms);
+        else
+          std::snprintf(buf, sizeof buf, "%s", status_name(r.status));
+        std::printf(" %20s", buf);
+      }
+      std::printf("\n");
     }
-    if (!best_own || !best_peer) continue;
-    const double a = table[best_own->name][n].median_cpu_ms, b = table[best_peer->name][n].median_cpu_ms;
-    std::printf("N=%-8zu fastest ccdlab: %s %.3f ms; fastest peer: %s %.3f ms; ratio %.1fx\n", n,
-                best_own->name.c_str(), a, best_peer->name.c_str(), b, b / a);
-    summary.push_back({{"n", n},
-                       {"fastest_ccdlab", best_own->name},
-                       {"fastest_ccdlab_cpu_ms", a},
-                       {"fastest_peer", best_peer->name},
-                       {"fastest_peer_cpu_ms", b},
-                       {"speedup", b / a}});
+    nlohmann::json summary = nlohmann::json::array();
+    for (std::size_t n : o_.sizes) {
+      const PeerInfo* best_own = nullptr;
+      const PeerInfo* best_peer = nullptr;
+      for (const PeerInfo& info : methods_) {
+        const RunResult& r = table_[info.name][n];
+        if (r.status != RunResult::kOk) continue;
+        const PeerInfo*& best = is_ccdlab(info) ? best_own : best_peer;
+        if (!best || r.median_cpu_ms < table_[best->name][n].median_cpu_ms) best = &info;
+      }
+      if (!best_own || !best_peer) continue;
+      const double a = table_[best_own->name][n].median_cpu_ms, b = table_[best_peer->name][n].median_cpu_ms;
+      std::printf("N=%-8zu fastest ccdlab: %s %.3f ms; fastest peer: %s %.3f ms; ratio %.1fx\n", n,
+                  best_own->name.c_str(), a, best_peer->name.c_str(), b, b / a);
+      summary.push_back({{"n", n},
+                         {"fastest_ccdlab", best_own->name},
+                         {"fastest_ccdlab_cpu_ms", a},
+                         {"fastest_peer", best_peer->name},
+                         {"fastest_peer_cpu_ms", b},
+                         {"speedup", b / a}});
+    }
+    return summary;
   }
-  std::printf("%s\n", all_exact ? "every method reported the exact pair set in every frame"
-                                 : "SOME METHOD DIFFERED FROM THE REFERENCE (see status)");
-  if (!json_path.empty()) {
-    const nlohmann::json doc = {
-        {"benchmark", "peers_bench"},
-        {"scene", "shared moving-spheres scene, seed 1 (benchmarks/support/peer_scene.hpp)"},
-        {"protocol", {{"warmup_frames", kWarmup}, {"measured_frames", kMeasured}, {"statistic", "median"},
-                      {"frame", "update + query + pair collection"},
-                      {"max_frame_s", max_frame_s}}},
-        {"nproc", sysconf(_SC_NPROCESSORS_ONLN)},
-        {"sizes", sizes},
-        {"references", references},
-        {"results", results},
-        {"summary", summary},
-        {"all_exact", all_exact}};
-    ccd::write_file_atomically(json_path, doc.dump(1) + "\n");
-    std::printf("wrote %s\n", json_path.c_str());
+
+  nlohmann::json document(const nlohmann::json& summary) const {
+    return {{"benchmark", "peers_bench"},
+            {"scene", "shared moving-spheres scene, seed 1 (benchmarks/support/peer_scene.hpp)"},
+            {"protocol",
+             {{"warmup_frames", kWarmup},
+              {"measured_frames", kMeasured},
+              {"statistic", "median"},
+              {"frame", "update + query + pair collection"},
+              {"max_frame_s", o_.max_frame_s}}},
+            {"nproc", sysconf(_SC_NPROCESSORS_ONLN)},
+            {"sizes", o_.sizes},
+            {"references", references_},
+            {"results", results_},
+            {"summary", summary},
+            {"all_exact", all_exact_}};
   }
-  return all_exact ? 0 : 1;
+
+  bool all_exact() const { return all_exact_; }
+
+ private:
+  // Why a method is not run at size n (projected from its last size), or "".
+  std::string skip_reason(const PeerInfo& info, std::size_t n) const {
+    const auto it = last_.find(info.name);
+    if (it == last_.end()) return "";
+    const auto& [n0, r0] = it->second;
+    const double scale = static_cast<double>(n) / static_cast<double>(n0);
+    const double max_frame_ms = o_.max_frame_s * 1e3;
+    if (r0.status == RunResult::kSkipped) return "skipped at N=" + std::to_string(n0);
+    if (r0.median_cpu_ms * scale > max_frame_ms)
+      return "projected " + std::to_string(r0.median_cpu_ms * scale / 1e3) +
+             " s/frame from N=" + std::to_string(n0);
+    if (info.quadratic_setup && r0.setup_ms * scale * scale > 10 * max_frame_ms)
+      return "quadratic setup: projected " + std::to_string(r0.setup_ms * scale * scale / 1e3) +
+             " s from N=" + std::to_string(n0);
+    return "";
+  }
+
+  void run_method(const PeerInfo& info, std::size_t n, const std::vector<FrameRef>& ref) {
+    RunResult r;
+    if (const std::string why = skip_reason(info, n); !why.empty()) {
+      r.status = RunResult::kSkipped;
+      set_message(r, why);
+    } else {
+      r = run_isolated(info, n, ref, o_.max_frame_s * 1e3);
+      last_[info.name] = {n, r};
+    }
+    table_[info.name][n] = r;
+    if (r.status == RunResult::kMismatch || r.status == RunResult::kCrashed) all_exact_ = false;
+    const bool filtered = r.reported_per_frame > r.pairs_per_frame;
+    std::string status = status_name(r.status);
+    if (r.status == RunResult::kOk && filtered) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "ok, filtered from %.0f reported", r.reported_per_frame);
+      status = buf;
+    }
+    if (r.message[0]) status += std::string(" (") + r.message + ")";
+    if (r.status == RunResult::kOk)
+      std::printf("%-30s %-28s %10.3f %10.3f %10.3f %10.1f %11.1f %9.1f  %s\n", info.name.c_str(),
+                  info.library.c_str(), r.median_cpu_ms, r.median_wall_ms, r.min_cpu_ms, r.setup_ms,
+                  r.pairs_per_frame, r.peak_mb, status.c_str());
+    else
+      std::printf("%-30s %-28s %10s %10s %10s %10s %11s %9s  %s\n", info.name.c_str(), info.library.c_str(),
+                  "-", "-", "-", "-", "-", "-", status.c_str());
+    std::fflush(stdout);
+    nlohmann::json j = {{"method", info.name},
+                        {"library", info.library},
+                        {"note", info.note},
+                        {"n", n},
+                        {"status", status_name(r.status)},
+                        {"message", r.message}};
+    if (r.status == RunResult::kOk)
+      j.update({{"median_cpu_ms", r.median_cpu_ms},
+                {"min_cpu_ms", r.min_cpu_ms},
+                {"median_wall_ms", r.median_wall_ms},
+                {"setup_wall_ms", r.setup_ms},
+                {"pairs_per_frame", r.pairs_per_frame},
+                {"reported_pairs_per_frame", r.reported_per_frame},
+                {"filtered_to_exact", filtered},
+                {"peak_mb", r.peak_mb},
+                {"frames_verified", r.frames_verified}});
+    results_.push_back(j);
+  }
+
+  const Options& o_;
+  std::vector<PeerInfo> methods_;
+  nlohmann::json results_ = nlohmann::json::array();
+  nlohmann::json references_ = nlohmann::json::array();
+  std::map<std::string, std::pair<std::size_t, RunResult>> last_;  ///< last measured size per method
+  std::map<std::string, std::map<std::size_t, RunResult>> table_;
+  bool all_exact_ = true;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options options = parse_options(argc, argv);
+  std::vector<PeerInfo> methods = select_methods(options.only);
+  if (methods.empty()) {
+    std::fprintf(stderr, "peers_bench: no method matches --methods\n");
+    return 2;
+  }
+  if (!options.json_path.empty() && !json_folder_writable(options.json_path)) {
+    std::fprintf(stderr, "peers_bench: --json %s: cannot write into folder %s\n", options.json_path.c_str(),
+                 std::filesystem::path(options.json_path).parent_path().c_str());
+    return 2;
+  }
+  Session session(options, std::move(methods));
+  for (const std::size_t n : options.sizes) session.run_size(n);
+  const nlohmann::json summary = session.summary();
+  std::printf("%s\n", session.all_exact() ? "every method reported the exact pair set in every frame"
+                                          : "SOME METHOD DIFFERED FROM THE REFERENCE (see status)");
+  if (!options.json_path.empty()) {
+    ccd::write_file_atomically(options.json_path, session.document(summary).dump(1) + "\n");
+    std::printf("wrote %s\n", options.json_path.c_str());
+  }
+  return session.all_exact() ? 0 : 1;
 }

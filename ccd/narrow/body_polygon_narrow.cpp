@@ -2,16 +2,11 @@
 
 #include <ccd/motion/rigid_motion.hpp>
 #include <ccd/narrow/conservative_advancement.hpp>
-#include <ccd/narrow/narrow_table.hpp>
 
 namespace ccd {
 
 ContactResult polygon_advancement(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
   return conservative_advancement_fixed(in, body, polygon_proxy(polygon));
-}
-
-ContactResult body_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon) {
-  return narrow_table().find_polygon(in.motion->kind(body))(in, body, polygon);
 }
 
 }  // namespace ccd

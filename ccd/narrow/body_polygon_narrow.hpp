@@ -1,7 +1,8 @@
 #pragma once
 // The narrow phase of a moving body against a static polygon (ccd/scene/scenery.hpp): the
 // polygon column of the narrow table (ccd/narrow/narrow_table.hpp), keyed by the body's
-// shape. The default table's entries:
+// shape; callers look the entry up there (narrow_table().find_polygon(kind)). The default
+// table's entries:
 //  - a sphere (kind Sphere, spinning or not): the exact sphere-polygon
 //    entry (ccd/narrow/sphere_polygon_narrow.hpp), toi_error 0;
 //  - any other shape: polygon_advancement, the generic entry of the body-body rigid pairs,
@@ -19,8 +20,5 @@ namespace ccd {
 
 /// Conservative advancement of `body` against the polygon at rest (any shape).
 ContactResult polygon_advancement(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon);
-
-/// The default table's entry for the body's kind (narrow_table().find_polygon).
-ContactResult body_polygon_narrow(const NarrowInput& in, std::uint32_t body, const StaticPolygon& polygon);
 
 }  // namespace ccd

@@ -8,6 +8,7 @@
 #include <pipeline/scheduler_registry.hpp>
 #include <ccd/truth/ground_truth.hpp>
 #include <generators/registry.hpp>
+#include <experiments/method.hpp>
 #include <experiments/runner.hpp>
 
 #include <catch2/catch.hpp>
@@ -37,10 +38,8 @@ ccd::ScheduleInput input_of(const Small& s) {
 }
 
 ccd::ScheduleResult run_fixed(const Small& s, const std::string& method, const std::string& schedule, double dt) {
-  const std::size_t slash = method.find('/');
-  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
-  const ccd::BroadPhaseSpec broad = ccd::parse_broad_phase(method.substr(slash + 1));
-  const auto scheduler = ccd::parse_scheduler(schedule).make({&bound, &broad, dt});
+  const ccdlab::MethodSpec m = ccdlab::parse_method(method);
+  const auto scheduler = ccd::parse_scheduler(schedule).make({&m.bound, &m.broad_phase, dt});
   ccd::ScheduleResult out;
   REQUIRE(scheduler->run(input_of(s), out));
   return out;
@@ -53,18 +52,16 @@ struct LoopCounts {
 };
 
 LoopCounts plain_loop(const Small& s, const std::string& method, double dt) {
-  const std::size_t slash = method.find('/');
-  const ccd::BoundSpec bound = ccd::parse_bound(method.substr(0, slash));
-  ccd::StepPipeline pipeline(bound.make(), bound.info->knowledge,
-                             ccd::parse_broad_phase(method.substr(slash + 1)).make());
-  const bool continuous = bound.info->knowledge != ccd::Knowledge::Instant;
+  const ccdlab::MethodSpec m = ccdlab::parse_method(method);
+  ccd::StepPipeline pipeline(m.bound.make(), m.bound.info->knowledge, m.broad_phase.make());
+  const bool continuous = m.continuous();
   ccd::StateCursor cursor(s.traj);
   std::vector<ccd::BodyState> states;
   ccd::StepResult step;
   ccd::StepContext ctx;
   ctx.acceleration_bound = s.scene.max_acceleration();
   ctx.walls = s.scene.box;
-  ctx.exact = bound.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
+  ctx.exact = m.bound.info->knowledge == ccd::Knowledge::Exact ? &s.traj : nullptr;
   ctx.motion = &s.motion;
   LoopCounts c;
   const double T = s.scene.horizon;

@@ -2,6 +2,7 @@
 // other shapes conservative advancement against the polygon at rest, whose bracket
 // [toi, toi + toi_error] holds the hand-worked first contact (rigid_scenery_scenes.hpp).
 #include <ccd/narrow/body_polygon_narrow.hpp>
+#include <ccd/narrow/narrow_table.hpp>
 
 #include "../scene/rigid_scenery_scenes.hpp"
 
@@ -25,7 +26,7 @@ struct Fixture {
     in.t1 = t1;
     in.sample = sample;
     in.motion = &rigid;
-    return ccd::body_polygon_narrow(in, body, scene.scenery[body]);
+    return ccd::narrow_table().find_polygon(rigid.kind(body))(in, body, scene.scenery[body]);
   }
 };
 
@@ -82,7 +83,8 @@ TEST_CASE("body-polygon narrow phase: a sphere in a rigid scene takes the exact 
   in.t0 = 1.0;
   in.t1 = 2.0;
   in.motion = &rigid;
-  const ccd::ContactResult c = ccd::body_polygon_narrow(in, static_cast<std::uint32_t>(s.bodies.size() - 1), s.scenery[0]);
+  const auto body = static_cast<std::uint32_t>(s.bodies.size() - 1);
+  const ccd::ContactResult c = ccd::narrow_table().find_polygon(rigid.kind(body))(in, body, s.scenery[0]);
   REQUIRE(c.status == ccd::QueryStatus::Hit);
   CHECK(c.toi == Approx(1.5).margin(1e-12));
   CHECK(c.toi_error == 0.0);
