@@ -44,8 +44,8 @@ std::vector<CullerEntry> make_table() {
                  return std::unique_ptr<Culler>(std::make_unique<SensorCuller>());
                }});
   t.push_back({"mesh_sweep", false,
-               "sort and sweep on the axis of largest variance: vertex boxes against face boxes, edges against "
-               "edges, with half-interval boxes",
+               "sort and sweep in a grid of cells across the sweep axis (layout by a sampled cost): vertex "
+               "boxes against face boxes, edges against edges, with half-interval boxes",
                [] { return std::unique_ptr<Culler>(std::make_unique<MeshSweepCuller>()); }});
   for (const BroadPhaseInfo& info : broad_phase_registry())
     t.push_back(boxes_entry(std::string(kBoxesPrefix) + std::string(info.name), parse_broad_phase(info.name)));

@@ -2,7 +2,7 @@
 #include <ccd/geometry/numeric_limits.hpp>
 
 #include <cloth/cull/primitive_boxes.hpp>
-#include <ccd/broad_phase/variance_axis.hpp>
+#include <cloth/mesh_ccd/sweep_layout.hpp>
 #include <ccd/util/parallel_for.hpp>
 
 #include <algorithm>
@@ -78,202 +78,121 @@ Item make_item(const Aabb& b, int ax, int a1, std::uint32_t id, std::array<std::
   return {b.lo[ax], b.hi[ax], b.lo[a1], b.hi[a1], b.lo[a2], b.hi[a2], id, v};
 }
 
-// The slabs along the slab axis: slab(x) = clamp(floor((x - origin) / width), 0, count - 1),
-// monotone in x as computed (a rounded difference and a rounded quotient by a positive
-// number are monotone), so for boxes that overlap, slab(max(lo_a, lo_b)) = max(slab(lo_a),
-// slab(lo_b)) lies in both boxes' slab ranges.
-struct Slabs {
-  double origin = 0.0, width = kInf;
-  std::size_t count = 1;
-  std::size_t of(double x) const {
-    if (count == 1) return 0;
-    const double q = (x - origin) / width;
-    if (!(q > 0)) return 0;
-    if (!(q < static_cast<double>(count))) return count - 1;
-    return std::min(count - 1, static_cast<std::size_t>(q));
-  }
-};
-
-constexpr std::size_t kMaxSlabs = std::size_t{1} << 16;
-
-// Slabs of `width` from lo to hi: at most kMaxSlabs and at most `cap`; one slab when the
-// width or the span is not > 0 and finite.
-Slabs slabs_over(double lo, double hi, double width, std::size_t cap) {
-  Slabs s;
-  const double span = hi - lo;
-  if (!(width > 0) || !std::isfinite(width) || !(span > 0) || !std::isfinite(span)) return s;
-  const double most = static_cast<double>(std::max<std::size_t>(1, std::min(kMaxSlabs, cap)));
-  const double wanted = std::ceil(span / width);
-  s.origin = lo;
-  if (!(wanted < most)) {
-    s.count = static_cast<std::size_t>(most);
-    s.width = span / most;
-  } else {
-    s.count = std::max<std::size_t>(1, static_cast<std::size_t>(wanted));
-    s.width = width;
-  }
-  if (s.count == 1 || !(s.width > 0) || !std::isfinite(s.width)) s = Slabs{};
-  return s;
-}
-
-struct Layout {
-  int axis = 0, slab_axis = 1;
-  Slabs slabs;
-};
-
-// The sweep axis, the slab axis and the slab width, chosen by the estimated cost of the
-// edge-edge sweep (the largest of the three) on a sample of up to kSample edges spread over
-// the mesh: for every sweep axis a, slab axis b != a and width (one slab, or 1, 2, 4, ...,
-// 64 times the sample's median extent on b), the sample pairs whose a-intervals overlap
-// times the slabs they share (the interval tests of the sweep), plus kEntryCost per box
-// per slab it goes into, scaled to the whole mesh; the cheapest wins (ties: the first
-// tried). Only speed depends on it: any layout gives the same candidates. With a given
-// width: the axes of largest and second-largest variance of the vertex boxes' centres,
-// that width.
-constexpr std::size_t kSample = 512;
-constexpr double kEntryCost = 16.0;
-
-Layout choose_layout(std::span<const Aabb> vb, std::span<const std::array<std::uint32_t, 2>> edges, double width) {
-  Layout best;
-  double lo[3] = {kInf, kInf, kInf}, hi[3] = {-kInf, -kInf, -kInf};
-  for (const Aabb& b : vb)
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], b.lo[k]);
-      hi[k] = std::max(hi[k], b.hi[k]);
-    }
-  if (width != 0 || edges.empty()) {
-    best.axis = largest_variance_axis(vb);
-    const int p = (best.axis + 1) % 3, q = (best.axis + 2) % 3;
-    double mean[2] = {0, 0}, var[2] = {0, 0};
-    for (const Aabb& b : vb) {
-      mean[0] += 0.5 * b.lo[p] + 0.5 * b.hi[p];
-      mean[1] += 0.5 * b.lo[q] + 0.5 * b.hi[q];
-    }
-    for (double& m : mean) m /= static_cast<double>(std::max<std::size_t>(1, vb.size()));
-    for (const Aabb& b : vb) {
-      const double dp = 0.5 * b.lo[p] + 0.5 * b.hi[p] - mean[0], dq = 0.5 * b.lo[q] + 0.5 * b.hi[q] - mean[1];
-      var[0] += dp * dp;
-      var[1] += dq * dq;
-    }
-    best.slab_axis = var[1] > var[0] ? q : p;
-    if (var[1] == var[0]) best.slab_axis = std::min(p, q);
-    if (!edges.empty()) best.slabs = slabs_over(lo[best.slab_axis], hi[best.slab_axis], width, vb.size());
-    return best;
-  }
-  const std::size_t n = edges.size(), m = std::min(n, kSample);
-  std::vector<Aabb> sample(m);
-  for (std::size_t i = 0; i < m; ++i) {
-    const auto& e = edges[i * n / m];
-    sample[i] = vb[e[0]];
-    sample[i].merge(vb[e[1]]);
-  }
-  const double pair_scale = m > 1 ? (static_cast<double>(n) * static_cast<double>(n - 1)) /
-                                        (static_cast<double>(m) * static_cast<double>(m - 1))
-                                  : 0.0;
-  const double entry_scale = static_cast<double>(n) / static_cast<double>(m);
-  double best_cost = kInf;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  std::vector<std::size_t> first(m), last(m);
-  std::vector<double> extent(m);
-  for (int a = 0; a < 3; ++a) {
-    pairs.clear();  // the sample pairs whose a-intervals overlap
-    for (std::uint32_t i = 0; i < m; ++i)
-      for (std::uint32_t j = i + 1; j < m; ++j)
-        if (sample[i].lo[a] <= sample[j].hi[a] && sample[j].lo[a] <= sample[i].hi[a]) pairs.emplace_back(i, j);
-    const double one_slab = static_cast<double>(pairs.size()) * pair_scale + kEntryCost * static_cast<double>(n);
-    if (one_slab < best_cost) {
-      best_cost = one_slab;
-      best = Layout{a, (a + 1) % 3, Slabs{}};
-    }
-    for (int b = 0; b < 3; ++b) {
-      if (b == a) continue;
-      for (std::size_t i = 0; i < m; ++i) extent[i] = sample[i].hi[b] - sample[i].lo[b];
-      std::nth_element(extent.begin(), extent.begin() + m / 2, extent.end());
-      const double median = extent[m / 2];
-      for (double factor = 1; factor <= 64; factor *= 2) {
-        const Slabs slabs = slabs_over(lo[b], hi[b], factor * median, vb.size());
-        if (slabs.count == 1) continue;
-        double entries = 0;
-        for (std::size_t i = 0; i < m; ++i) {
-          first[i] = slabs.of(sample[i].lo[b]);
-          last[i] = std::max(first[i], slabs.of(sample[i].hi[b]));
-          entries += static_cast<double>(last[i] - first[i] + 1);
-        }
-        double tests = 0;
-        for (const auto& [i, j] : pairs) {
-          const std::size_t f = std::max(first[i], first[j]), l = std::min(last[i], last[j]);
-          if (f <= l) tests += static_cast<double>(l - f + 1);
-        }
-        const double cost = tests * pair_scale + kEntryCost * entries * entry_scale;
-        if (cost < best_cost) {
-          best_cost = cost;
-          best = Layout{a, b, slabs};
-        }
-      }
-    }
-  }
-  return best;
-}
-
-// Puts every item of `items` (sorted) into the slabs its slab-axis interval overlaps:
-// `out` holds the slabs' items concatenated, slab s at [offsets[s], offsets[s + 1]), each
-// slab in the sorted order. Built in `parts` contiguous parts of `items` on the threads
-// (the layout does not depend on them).
-void place_in_slabs(const std::vector<Item>& items, const Slabs& slabs, unsigned threads,
-                    std::vector<MeshSweep::SlabItem>& out, std::vector<std::size_t>& offsets) {
-  const std::size_t n = items.size(), S = slabs.count;
-  // At most 8 parts: each holds a count per slab.
+// Puts every item of `items` (sorted) into the cells its two intervals across the sweep
+// axis overlap: `out` holds the lists concatenated, list cell * 4 + class at
+// [offsets[list], offsets[list + 1]), each list in the sorted order. The class of an item in
+// a cell: bit 0 set when the cell is in the item's first slab on the slab axis, bit 1 on
+// the third axis. Built in `parts` contiguous parts of `items` on the threads (the layout
+// does not depend on them).
+void place_in_cells(const DefaultInitVector<Item>& items, const SweepLayout& layout, unsigned threads,
+                    DefaultInitVector<MeshSweep::SlabItem>& out, std::vector<std::size_t>& offsets) {
+  const std::size_t n = items.size(), S2 = layout.slabs2.count, lists = 4 * layout.cells();
+  // At most 8 parts: each holds a count per list.
   const std::size_t parts =
       std::max<std::size_t>(1, std::min<std::size_t>({threads, std::size_t{8}, (n + kBuildBlock - 1) / kBuildBlock}));
-  std::vector<std::vector<std::size_t>> counts(parts, std::vector<std::size_t>(S + 1, 0));
+  std::vector<std::vector<std::size_t>> counts(parts, std::vector<std::size_t>(lists + 1, 0));
   auto range = [&](std::size_t p) { return std::pair{n * p / parts, n * (p + 1) / parts}; };
+  // Each item's first and last slab on both axes.
+  DefaultInitVector<std::array<std::uint32_t, 4>> spans(n);
+  // f(list) for each list of item i.
+  auto for_lists = [&](std::size_t i, auto&& f) {
+    const auto [f1, l1, f2, l2] = spans[i];
+    for (std::size_t s1 = f1; s1 <= l1; ++s1)
+      for (std::size_t s2 = f2; s2 <= l2; ++s2) f(4 * (s1 * S2 + s2) + (s1 == f1 ? 1u : 0u) + (s2 == f2 ? 2u : 0u));
+  };
   parallel_for(parts, threads, [&](std::size_t p, unsigned) {
     const auto [b, e] = range(p);
     auto& c = counts[p];
     for (std::size_t i = b; i < e; ++i) {
-      const std::size_t first = slabs.of(items[i].lo1), last = std::max(first, slabs.of(items[i].hi1));
-      for (std::size_t s = first; s <= last; ++s) ++c[s];
+      const Item& it = items[i];
+      const std::size_t f1 = layout.slabs.of(it.lo1), f2 = layout.slabs2.of(it.lo2);
+      spans[i] = {static_cast<std::uint32_t>(f1), static_cast<std::uint32_t>(std::max(f1, layout.slabs.of(it.hi1))),
+                  static_cast<std::uint32_t>(f2), static_cast<std::uint32_t>(std::max(f2, layout.slabs2.of(it.hi2)))};
+      for_lists(i, [&](std::size_t list) { ++c[list]; });
     }
   });
-  offsets.assign(S + 1, 0);
-  // cursor: counts[p][s] becomes where part p starts writing in slab s.
+  offsets.assign(lists + 1, 0);
+  // cursor: counts[p][list] becomes where part p starts writing in that list.
   std::size_t total = 0;
-  for (std::size_t s = 0; s < S; ++s) {
-    offsets[s] = total;
+  for (std::size_t l = 0; l < lists; ++l) {
+    offsets[l] = total;
     for (std::size_t p = 0; p < parts; ++p) {
-      const std::size_t c = counts[p][s];
-      counts[p][s] = total;
+      const std::size_t c = counts[p][l];
+      counts[p][l] = total;
       total += c;
     }
   }
-  offsets[S] = total;
+  offsets[lists] = total;
   out.resize(total);
   parallel_for(parts, threads, [&](std::size_t p, unsigned) {
     const auto [b, e] = range(p);
     auto& cursor = counts[p];
     for (std::size_t i = b; i < e; ++i) {
       const Item& it = items[i];
-      const std::size_t first = slabs.of(it.lo1), last = std::max(first, slabs.of(it.hi1));
-      const MeshSweep::SlabItem si{it.lo,  it.hi, it.lo1, it.hi1, it.lo2, it.hi2, it.id, static_cast<std::uint32_t>(first),
-                                   static_cast<std::uint32_t>(i), it.v};
-      for (std::size_t s = first; s <= last; ++s) out[cursor[s]++] = si;
+      const MeshSweep::SlabItem si{it.lo, it.hi, it.lo1, it.hi1, it.lo2, it.hi2, it.id, static_cast<std::uint32_t>(i), it.v};
+      for_lists(i, [&](std::size_t list) { out[cursor[list]++] = si; });
     }
   });
 }
 
-// The slab holding position k of a set's concatenated slabs.
-std::size_t slab_at(const std::vector<std::size_t>& offsets, std::size_t k) {
+// The list holding position k of a set's concatenated lists.
+std::size_t list_at(const std::vector<std::size_t>& offsets, std::size_t k) {
   return static_cast<std::size_t>(std::upper_bound(offsets.begin(), offsets.end(), k) - offsets.begin()) - 1;
+}
+
+// Entries [begin, end) of one set's lists (`own`, `own_offsets`) against the lists of the
+// same cell in `other` whose class completes theirs (class | other class == 3: the pair's
+// larger first slabs on both axes are this cell's, so it is met in this cell only): from
+// the first entry b of each such list with !behind(a, b), while b starts on the sweep axis
+// before a ends, visit(a, b). behind(a, b) must be monotone along a list (false after true
+// never, true after false for a later a) and say which of the two meets the pair.
+template <class Behind, class Visit>
+void sweep_lists(const MeshSweep::SlabItem* own, const std::vector<std::size_t>& own_offsets, std::size_t begin,
+                 std::size_t end, const MeshSweep::SlabItem* other, const std::vector<std::size_t>& other_offsets,
+                 Behind&& behind, Visit&& visit) {
+  std::size_t list = list_at(own_offsets, begin), next = own_offsets[list + 1];
+  std::size_t at[4] = {}, stop[4] = {};
+  unsigned with = 0;  // bit d: list d of the cell completes this class
+  bool fresh = true;
+  for (std::size_t k = begin; k < end; ++k) {
+    while (k >= next) {
+      next = own_offsets[++list + 1];
+      fresh = true;
+    }
+    const MeshSweep::SlabItem& a = own[k];
+    if (fresh) {
+      const std::size_t cell = list / 4, cls = list % 4;
+      with = 0;
+      for (std::size_t d = 0; d < 4; ++d) {
+        if ((cls | d) != 3) continue;
+        const std::size_t first = other_offsets[4 * cell + d];
+        stop[d] = other_offsets[4 * cell + d + 1];
+        if (first == stop[d]) continue;
+        with |= 1u << d;
+        at[d] = static_cast<std::size_t>(
+            std::partition_point(other + first, other + stop[d],
+                                 [&](const MeshSweep::SlabItem& b) { return behind(a, b); }) - other);
+      }
+      fresh = false;
+    }
+    for (std::size_t d = 0; d < 4; ++d) {
+      if (!(with >> d & 1)) continue;
+      std::size_t j = at[d];
+      while (j < stop[d] && behind(a, other[j])) ++j;
+      at[d] = j;
+      for (; j < stop[d] && other[j].lo <= a.hi; ++j) visit(a, other[j]);
+    }
+  }
 }
 
 Halves make_halves(const Aabb& early, const Aabb& late, int ax) {
   Halves h{};
   for (int k = 0; k < 3; ++k) {
     const int a = (ax + k) % 3;
-    h.lo[0][k] = early.lo[a];
-    h.hi[0][k] = early.hi[a];
-    h.lo[1][k] = late.lo[a];
-    h.hi[1][k] = late.hi[a];
+    h.half[0].lo[k] = early.lo[a];
+    h.half[0].hi[k] = early.hi[a];
+    h.half[1].lo[k] = late.lo[a];
+    h.half[1].hi[k] = late.hi[a];
   }
   return h;
 }
@@ -302,7 +221,7 @@ struct PrimitiveSet {
       std::uint64_t bits;
       std::size_t pos;
     };
-    std::vector<Rec> a(n), b(n);
+    DefaultInitVector<Rec> a(n), b(n);
     for (std::size_t i = 0; i < n; ++i) {
       const double x = keys[i].first + 0.0;  // -0 -> +0
       std::uint64_t u;
@@ -329,7 +248,7 @@ struct PrimitiveSet {
   }
   // fill(i, item, halves or nullptr) builds primitive i.
   template <class Fill>
-  void build(std::vector<Item>& items, std::vector<Halves>& halves, bool with_halves, unsigned threads,
+  void build(DefaultInitVector<Item>& items, DefaultInitVector<Halves>& halves, bool with_halves, unsigned threads,
              Fill&& fill) const {
     const std::size_t n = keys.size();
     items.resize(n);
@@ -370,6 +289,17 @@ inline bool overlap_others(const A& a, const B& b) {
 
 inline bool overlap_all(const Item& a, const Item& b) { return a.lo <= b.hi && b.lo <= a.hi && overlap_others(a, b); }
 
+// Whether the boxes over [0, 1/2] overlap, or those over [1/2, 1].
+inline bool halves_overlap(const Halves& a, const Halves& b) {
+  for (int h = 0; h < 2; ++h) {
+    const Halves::Box &p = a.half[h], &q = b.half[h];
+    if ((p.lo[0] <= q.hi[0]) & (q.lo[0] <= p.hi[0]) & (p.lo[1] <= q.hi[1]) & (q.lo[1] <= p.hi[1]) &
+        (p.lo[2] <= q.hi[2]) & (q.lo[2] <= p.hi[2]))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void MeshSweep::prepare(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1,
@@ -380,7 +310,7 @@ void MeshSweep::prepare(const ClothMesh& mesh, std::span<const Vec3> x0, std::sp
   const unsigned threads = std::max(1u, options.threads);
   time_halves_ = options.time_halves;
   const VertexBoxes vb = vertex_box_sets(x0, x1, options.separation / 2, time_halves_, threads);
-  const Layout layout = choose_layout(vb.whole, mesh.edges, options.slab_width);
+  const SweepLayout layout = choose_sweep_layout(vb.whole, mesh.edges, options.slab_width, options.slab_width2);
   axis_ = layout.axis;
   slab_axis_ = layout.slab_axis;
   const int ax = axis_, sa = slab_axis_;
@@ -411,25 +341,17 @@ void MeshSweep::prepare(const ClothMesh& mesh, std::span<const Vec3> x0, std::sp
     item = make_item(union_box<2>(vb.whole, e), ax, sa, i, {e[0], e[1], e[1]});
     if (halves) *halves = make_halves(union_box<2>(vb.early, e), union_box<2>(vb.late, e), ax);
   });
-  const Slabs& slabs = layout.slabs;
-  slabs_ = slabs.count;
-  place_in_slabs(vertices_, slabs, threads, slab_vertices_, vertex_offsets_);
-  place_in_slabs(faces_, slabs, threads, slab_faces_, face_offsets_);
-  place_in_slabs(edges_, slabs, threads, slab_edges_, edge_offsets_);
+  slabs_ = layout.slabs.count;
+  slabs2_ = layout.slabs2.count;
+  place_in_cells(vertices_, layout, threads, slab_vertices_, vertex_offsets_);
+  place_in_cells(faces_, layout, threads, slab_faces_, face_offsets_);
+  place_in_cells(edges_, layout, threads, slab_edges_, edge_offsets_);
   auto chunks_of = [](std::size_t n) { return (n + kChunk - 1) / kChunk; };
   edge_chunks_ = chunks_of(slab_edges_.size());
   face_chunks_ = chunks_of(slab_faces_.size());
   vertex_chunks_ = chunks_of(slab_vertices_.size());
 }
 
-bool MeshSweep::halves_overlap(const Halves& a, const Halves& b) const {
-  for (int h = 0; h < 2; ++h) {
-    bool all = true;
-    for (int k = 0; k < 3; ++k) all &= (a.lo[h][k] <= b.hi[h][k]) & (b.lo[h][k] <= a.hi[h][k]);
-    if (all) return true;
-  }
-  return false;
-}
 
 void MeshSweep::sweep(std::size_t chunk, std::span<Candidate> buffer, const Sink& sink) const {
   // Edge chunks first: they are the heaviest, and dynamic scheduling ends better with
@@ -448,90 +370,51 @@ void MeshSweep::sweep(std::size_t chunk, std::span<Candidate> buffer, const Sink
   sweep_vertices(chunk * kChunk, std::min(slab_vertices_.size(), (chunk + 1) * kChunk), buffer, sink);
 }
 
-// Slab entries [begin, end) of the faces against the vertices of the same slab whose
-// start lies in [lo_f, hi_f] on the sweep axis (a vertex starting before the face is found
-// from the vertex's side); a pair only in the slab max(first slabs).
+// Entries [begin, end) of the faces' lists against the vertices of the same cell starting
+// in [lo_f, hi_f] on the sweep axis (a vertex starting before the face is met from the
+// vertex's side).
 void MeshSweep::sweep_faces(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const {
   Emitter out(buffer, sink);
-  const SlabItem* v = slab_vertices_.data();
-  std::size_t s = slab_at(face_offsets_, begin), next = face_offsets_[s + 1];
-  std::size_t first = 0, last = 0;
-  bool fresh = true;
-  for (std::size_t k = begin; k < end; ++k) {
-    while (k >= next) {
-      next = face_offsets_[++s + 1];
-      fresh = true;
-    }
-    const SlabItem& f = slab_faces_[k];
-    if (fresh) {
-      last = vertex_offsets_[s + 1];
-      first = static_cast<std::size_t>(std::lower_bound(v + vertex_offsets_[s], v + last, f.lo,
-                                                        [](const SlabItem& a, double x) { return a.lo < x; }) -
-                                       v);
-      fresh = false;
-    }
-    while (first < last && v[first].lo < f.lo) ++first;
-    for (std::size_t j = first; j < last && v[j].lo <= f.hi; ++j) {
-      if (std::max(f.first, v[j].first) != s || !overlap_others(f, v[j])) continue;
-      const std::uint32_t id = v[j].id;
-      if (id == f.v[0] || id == f.v[1] || id == f.v[2]) continue;
-      if (time_halves_ && !halves_overlap(face_halves_[f.pos], vertex_halves_[v[j].pos])) continue;
-      out.push({PrimitivePair::VertexFace, id, f.id});
-    }
-  }
+  sweep_lists(
+      slab_faces_.data(), face_offsets_, begin, end, slab_vertices_.data(), vertex_offsets_,
+      [](const SlabItem& f, const SlabItem& v) { return v.lo < f.lo; },
+      [&](const SlabItem& f, const SlabItem& v) {
+        if (!overlap_others(f, v) || v.id == f.v[0] || v.id == f.v[1] || v.id == f.v[2]) return;
+        if (time_halves_ && !halves_overlap(face_halves_[f.pos], vertex_halves_[v.pos])) return;
+        out.push({PrimitivePair::VertexFace, v.id, f.id});
+      });
   out.flush();
 }
 
-// Slab entries [begin, end) of the vertices against the faces of the same slab whose
-// start lies in (lo_v, hi_v].
+// Entries [begin, end) of the vertices' lists against the faces of the same cell starting
+// in (lo_v, hi_v].
 void MeshSweep::sweep_vertices(std::size_t begin, std::size_t end, std::span<Candidate> buffer,
                                const Sink& sink) const {
   Emitter out(buffer, sink);
-  const SlabItem* f = slab_faces_.data();
-  std::size_t s = slab_at(vertex_offsets_, begin), next = vertex_offsets_[s + 1];
-  std::size_t first = 0, last = 0;
-  bool fresh = true;
-  for (std::size_t k = begin; k < end; ++k) {
-    while (k >= next) {
-      next = vertex_offsets_[++s + 1];
-      fresh = true;
-    }
-    const SlabItem& v = slab_vertices_[k];
-    if (fresh) {
-      last = face_offsets_[s + 1];
-      first = static_cast<std::size_t>(std::upper_bound(f + face_offsets_[s], f + last, v.lo,
-                                                        [](double x, const SlabItem& a) { return x < a.lo; }) -
-                                       f);
-      fresh = false;
-    }
-    while (first < last && f[first].lo <= v.lo) ++first;
-    for (std::size_t j = first; j < last && f[j].lo <= v.hi; ++j) {
-      if (std::max(v.first, f[j].first) != s || !overlap_others(v, f[j])) continue;
-      if (v.id == f[j].v[0] || v.id == f[j].v[1] || v.id == f[j].v[2]) continue;
-      if (time_halves_ && !halves_overlap(vertex_halves_[v.pos], face_halves_[f[j].pos])) continue;
-      out.push({PrimitivePair::VertexFace, v.id, f[j].id});
-    }
-  }
+  sweep_lists(
+      slab_vertices_.data(), vertex_offsets_, begin, end, slab_faces_.data(), face_offsets_,
+      [](const SlabItem& v, const SlabItem& f) { return f.lo <= v.lo; },
+      [&](const SlabItem& v, const SlabItem& f) {
+        if (!overlap_others(v, f) || v.id == f.v[0] || v.id == f.v[1] || v.id == f.v[2]) return;
+        if (time_halves_ && !halves_overlap(vertex_halves_[v.pos], face_halves_[f.pos])) return;
+        out.push({PrimitivePair::VertexFace, v.id, f.id});
+      });
   out.flush();
 }
 
-// Slab entries [begin, end) of the edges against the following edges of the same slab
-// starting before their end.
+// Entries [begin, end) of the edges' lists against the edges of the same cell after them
+// in the sorted order, starting before their end.
 void MeshSweep::sweep_edges(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const {
   Emitter out(buffer, sink);
-  const SlabItem* e = slab_edges_.data();
-  std::size_t s = slab_at(edge_offsets_, begin), next = edge_offsets_[s + 1];
-  for (std::size_t k = begin; k < end; ++k) {
-    while (k >= next) next = edge_offsets_[++s + 1];
-    const SlabItem& a = e[k];
-    for (std::size_t j = k + 1; j < next && e[j].lo <= a.hi; ++j) {
-      const SlabItem& b = e[j];
-      if (std::max(a.first, b.first) != s || !overlap_others(a, b)) continue;
-      if (a.v[0] == b.v[0] || a.v[0] == b.v[1] || a.v[1] == b.v[0] || a.v[1] == b.v[1]) continue;
-      if (time_halves_ && !halves_overlap(edge_halves_[a.pos], edge_halves_[b.pos])) continue;
-      out.push({PrimitivePair::EdgeEdge, std::min(a.id, b.id), std::max(a.id, b.id)});
-    }
-  }
+  sweep_lists(
+      slab_edges_.data(), edge_offsets_, begin, end, slab_edges_.data(), edge_offsets_,
+      [](const SlabItem& a, const SlabItem& b) { return b.pos <= a.pos; },
+      [&](const SlabItem& a, const SlabItem& b) {
+        if (!overlap_others(a, b)) return;
+        if (a.v[0] == b.v[0] || a.v[0] == b.v[1] || a.v[1] == b.v[0] || a.v[1] == b.v[1]) return;
+        if (time_halves_ && !halves_overlap(edge_halves_[a.pos], edge_halves_[b.pos])) return;
+        out.push({PrimitivePair::EdgeEdge, std::min(a.id, b.id), std::max(a.id, b.id)});
+      });
   out.flush();
 }
 

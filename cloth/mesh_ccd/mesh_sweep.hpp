@@ -1,22 +1,25 @@
 #pragma once
 // `mesh_sweep`: a broad phase made for the CCD of one mesh between two frames (every
-// vertex moving linearly from x0 to x1). A sort and sweep along the axis of largest
-// variance of the vertices' box centres, cut into slabs along the axis of second-largest
-// variance (a two-level sweep): vertex boxes against face boxes (a bipartite sweep: the
-// vertex-face candidates) and edge boxes against edge boxes (the edge-edge candidates).
-// There are no vertex-vertex, face-face or vertex-edge box tests, no quadratic step, and
-// nothing is allocated per pair.
+// vertex moving linearly from x0 to x1). A sort and sweep along one axis, cut into a grid of
+// cells across it (slabs along the two other axes): vertex boxes against face boxes (a
+// bipartite sweep: the vertex-face candidates) and edge boxes against edge boxes (the
+// edge-edge candidates). There are no vertex-vertex, face-face or vertex-edge box tests, no
+// quadratic step, and nothing is allocated per pair.
 //
-// Slabs. A one-level sweep of a sheet is O(n^1.5): along the sweep axis a box's interval
-// overlaps the starts of a whole column of the sheet. So the slab axis is cut into S slabs
-// of equal width w (S <= 2^16 and <= the vertex count); slab(x) = clamp(floor((x - origin)
-// / w), 0, S - 1) is monotone in x, as computed. The sweep axis, the slab axis and w are
-// chosen by the estimated cost of the edge-edge sweep on a sample of edges (mesh_sweep.cpp,
-// choose_layout); only the speed depends on them. A box goes into every slab from slab(lo) to slab(hi) of its slab-axis
-// interval; each slab is swept on its own, in the same (start, index) order. Two boxes that
-// overlap share slab(max of their two lows) = max of their first slabs, and the pair is
-// reported in that slab only: each pair exactly once, whatever the layout (one slab, boxes
-// on slab boundaries, any width).
+// Cells. A one-level sweep of a sheet is O(n^1.5): along the sweep axis a box's interval
+// overlaps the starts of a whole column of the sheet; and where the boxes are long (fast
+// motion), slabs along one axis alone leave whole rows of boxes apart on the third axis in
+// one slab. So the slab axis and the third axis are each cut into slabs of equal width
+// (cloth/mesh_ccd/sweep_layout.hpp: at most 2^16 cells and one per vertex); the sweep axis,
+// the slab axis and both widths (one slab on an axis included) are chosen by the estimated
+// cost of the edge-edge sweep on a sample of edges; only the speed depends on them. A box
+// goes into every cell its two intervals across the sweep axis overlap. Two boxes that
+// overlap share the cell of their larger first slabs on both axes, and the pair is met in
+// that cell only: in each cell a box is of one of four classes, by whether the cell is in
+// its first slab on the slab axis (bit 0) and on the third axis (bit 1), and a box is swept
+// only against the boxes of the cell whose class completes its own (class | class' == 3).
+// So each pair is tested once, whatever the layout (one cell, boxes on slab boundaries, any
+// widths), and a pair sharing many cells costs no more than one sharing one.
 //
 // Boxes. A vertex's box holds its path over [0, 1] widened by half the separation, rounded
 // outwards (cloth/cull/primitive_boxes.hpp); a face's or an edge's is the union of its
@@ -31,10 +34,11 @@
 // non-adjacent pairs whose whole boxes overlap (those of `boxes:brute`); with it, those
 // whose boxes also overlap over one half (brute_force() is the same rule pair by pair).
 //
-// Work is cut in chunks of the slabs' concatenated orders; each chunk's candidates come out
+// Work is cut in chunks of the cells' concatenated lists; each chunk's candidates come out
 // in blocks of a buffer the caller owns (streamed: never all held), each candidate in
-// exactly one chunk. The chunks and slabs do not depend on the thread count.
+// exactly one chunk. The chunks and cells do not depend on the thread count.
 #include <cloth/cull/candidate.hpp>
+#include <cloth/mesh_ccd/default_init.hpp>
 
 #include <array>
 #include <cstdint>
@@ -48,10 +52,14 @@ struct MeshSweepOptions {
   double separation = 0.0;  ///< minimum separation, m, >= 0, finite
   bool time_halves = true;  ///< also test the boxes over [0, 1/2] and [1/2, 1]
   unsigned threads = 1;     ///< threads building and sorting the boxes (>= 1)
-  /// Slab width: 0 chooses the layout (axes and width) by a sampled cost estimate; > 0 and
-  /// finite: that width, the axes of largest and second-largest variance of the vertex
-  /// boxes' centres; anything else (infinity): one slab.
+  /// Slab width: 0 chooses the layout (axes and widths) by a sampled cost estimate;
+  /// anything else forces it: the axes of largest and second-largest variance of the vertex
+  /// boxes' centres (the sweep axis and the slab axis), slabs of this width along the slab
+  /// axis when it is > 0 and finite (one slab otherwise, e.g. infinity) ...
   double slab_width = 0.0;
+  /// ... and, with a forced layout, slabs of this width along the third axis when it is > 0
+  /// and finite (one slab otherwise): a grid of cells. Ignored when slab_width is 0.
+  double slab_width2 = 0.0;
 };
 
 class MeshSweep {
@@ -66,10 +74,13 @@ class MeshSweep {
                const MeshSweepOptions& options);
   /// Chunks of work of the prepared sweep.
   std::size_t chunks() const { return face_chunks_ + vertex_chunks_ + edge_chunks_; }
-  /// The slab axis (!= axis()) and the number of slabs (>= 1).
+  /// The slab axis (!= axis()) and the number of slabs along it (>= 1); the number of slabs
+  /// along the third axis (>= 1); the cells (their product).
   int slab_axis() const { return slab_axis_; }
   std::size_t slabs() const { return slabs_; }
-  /// Boxes placed in slabs (vertices, faces and edges), counting each box once per slab.
+  std::size_t slabs2() const { return slabs2_; }
+  std::size_t cells() const { return slabs_ * slabs2_; }
+  /// Boxes placed in cells (vertices, faces and edges), counting each box once per cell.
   std::size_t slab_entries() const { return slab_vertices_.size() + slab_faces_.size() + slab_edges_.size(); }
   /// The candidates of chunk k (< chunks()), passed to `sink` in blocks of at most
   /// buffer.size() (>= 1): each full block, then the rest. Safe to call concurrently.
@@ -88,34 +99,36 @@ class MeshSweep {
     std::uint32_t id;
     std::array<std::uint32_t, 3> v;
   };
-  /// An item in one slab: the item, its first slab, and its position in the sorted order
-  /// (its half-interval boxes).
+  /// An item in one cell: the item and its position in the sorted order (its half-interval
+  /// boxes).
   struct SlabItem {
     double lo, hi, lo1, hi1, lo2, hi2;
     std::uint32_t id;
-    std::uint32_t first;
     std::uint32_t pos;
     std::array<std::uint32_t, 3> v;
   };
-  /// The two half-interval boxes of an item, in the same axis order.
+  /// The two half-interval boxes of an item, in the same axis order: half[0] over [0, 1/2],
+  /// half[1] over [1/2, 1].
   struct Halves {
-    double lo[2][3], hi[2][3];
+    struct Box {
+      double lo[3], hi[3];
+    } half[2];
   };
 
  private:
   void sweep_faces(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
   void sweep_vertices(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
   void sweep_edges(std::size_t begin, std::size_t end, std::span<Candidate> buffer, const Sink& sink) const;
-  bool halves_overlap(const Halves& a, const Halves& b) const;
 
   int axis_ = 0, slab_axis_ = 1;
-  std::size_t slabs_ = 1;
-  // Per set: the slabs' items, concatenated (slab s: [offsets[s], offsets[s + 1])).
-  std::vector<SlabItem> slab_vertices_, slab_faces_, slab_edges_;
+  std::size_t slabs_ = 1, slabs2_ = 1;
+  // Per set: the cells' lists of items, concatenated (list cell * 4 + class at
+  // [offsets[list], offsets[list + 1]), cell = slab * slabs2 + slab on the third axis).
+  DefaultInitVector<SlabItem> slab_vertices_, slab_faces_, slab_edges_;
   std::vector<std::size_t> vertex_offsets_, face_offsets_, edge_offsets_;
   bool time_halves_ = true;
-  std::vector<Item> vertices_, faces_, edges_;  // sorted by (lo, id)
-  std::vector<Halves> vertex_halves_, face_halves_, edge_halves_;  // in the same orders
+  DefaultInitVector<Item> vertices_, faces_, edges_;  // sorted by (lo, id)
+  DefaultInitVector<Halves> vertex_halves_, face_halves_, edge_halves_;  // in the same orders
   std::size_t face_chunks_ = 0, vertex_chunks_ = 0, edge_chunks_ = 0;
 };
 

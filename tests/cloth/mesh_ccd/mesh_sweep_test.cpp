@@ -2,10 +2,11 @@
 // returns exactly the non-adjacent pairs whose swept boxes overlap (what boxes:brute
 // returns); with it, exactly the pairs its brute-force reference keeps, a subset, whatever
 // the thread count and the buffer size. Pairs it drops are proved contact-free by the
-// exact reference. The two-level layout (slabs along a second axis) is checked the same way
-// on forced layouts: one slab, slabs as wide as the grid's cells (boxes exactly on their
-// boundaries), many thin slabs, frames 2^20 from the origin, a sheet of zero extent on one
-// axis.
+// exact reference. The layouts (a grid of cells across the sweep axis) are checked the same
+// way on forced layouts: one cell, slabs along one axis or both, slabs as wide as the grid
+// sheets' cells (boxes exactly on their boundaries), many thin slabs, frames 2^20 from the
+// origin, a sheet of zero extent on one axis, long thin boxes, boxes spanning every slab,
+// coincident boxes.
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/cull/cullers.hpp>
 #include <cloth/exact/exact_ccd.hpp>
@@ -44,23 +45,30 @@ void add_grid(MeshFramePair& m, int n, double h, const ccd::Vec3& origin, const 
     }
 }
 
-// mesh_sweep with and without its half-interval filter, on every slab width and thread
-// count given, against boxes:brute and its own brute-force reference, pair for pair.
-void check_layouts(const MeshFramePair& m, double separation, std::initializer_list<double> widths,
-                   std::size_t* most_slabs = nullptr) {
+struct Widths {
+  double slab = 0.0, third = 0.0;  // MeshSweepOptions::slab_width, slab_width2
+};
+
+// mesh_sweep with and without its half-interval filter, on every layout and thread count
+// given, against boxes:brute and its own brute-force reference, pair for pair.
+void check_layouts(const MeshFramePair& m, double separation, std::initializer_list<Widths> layouts,
+                   std::size_t* most_cells = nullptr, std::size_t* most_grid = nullptr) {
   const ClothMesh mesh = mesh_topology(m.faces, m.x0.size());
   const std::vector<Candidate> boxes = find_culler("boxes:brute")->cull(mesh, m.x0, m.x1, separation);
   REQUIRE(!boxes.empty());
-  for (const double width : widths)
+  for (const Widths w : layouts)
     for (const unsigned threads : {1u, 3u, 7u}) {
-      INFO("slab width " << width << ", threads " << threads);
+      INFO("slab widths " << w.slab << ", " << w.third << ", threads " << threads);
       MeshSweep plain;
-      plain.prepare(mesh, m.x0, m.x1, {separation, false, threads, width});
-      if (std::isinf(width)) CHECK(plain.slabs() == 1);
-      if (most_slabs) *most_slabs = std::max(*most_slabs, plain.slabs());
+      plain.prepare(mesh, m.x0, m.x1, {separation, false, threads, w.slab, w.third});
+      if (std::isinf(w.slab)) CHECK(plain.slabs() == 1);
+      if (w.slab != 0 && !(w.third > 0 && std::isfinite(w.third))) CHECK(plain.slabs2() == 1);
+      CHECK(plain.cells() <= m.x0.size());
+      if (most_cells) *most_cells = std::max(*most_cells, plain.cells());
+      if (most_grid) *most_grid = std::max(*most_grid, std::min(plain.slabs(), plain.slabs2()));
       CHECK(plain.all(threads) == boxes);
       MeshSweep halves;
-      halves.prepare(mesh, m.x0, m.x1, {separation, true, threads, width});
+      halves.prepare(mesh, m.x0, m.x1, {separation, true, threads, w.slab, w.third});
       const std::vector<Candidate> got = halves.all(threads);
       CHECK(got == halves.brute_force());
       CHECK(std::includes(boxes.begin(), boxes.end(), got.begin(), got.end()));
@@ -135,10 +143,15 @@ TEST_CASE("mesh_sweep's slabs: any layout gives brute force's pairs", "[cloth][m
   for (const std::string_view name : mesh_frame_generators())
     for (const double separation : {0.0, 0.05}) {
       INFO(name << ", separation " << separation);
-      std::size_t most = 0;
-      // automatic, one slab, a few widths, and 1e-300: the most slabs allowed (one per vertex)
-      check_layouts(generate_mesh_frames(name, 300), separation, {0.0, kInf, 0.25, 0x1p-5, 1e-300}, &most);
+      std::size_t most = 0, grid = 0;
+      // automatic, one cell, slabs on one axis, grids, and 1e-300: the most cells allowed
+      // (one per vertex)
+      check_layouts(generate_mesh_frames(name, 300), separation,
+                    {{0.0, 0.0}, {kInf, kInf}, {0.25, kInf}, {0x1p-5, 0.0}, {kInf, 0.25}, {0.25, 0.25},
+                     {0x1p-5, 0x1p-3}, {1e-300, kInf}, {1e-300, 1e-300}, {0x1p-3, 1e-300}},
+                    &most, &grid);
       CHECK(most > 16);
+      CHECK(grid >= 4);
     }
 }
 
@@ -153,16 +166,47 @@ TEST_CASE("mesh_sweep's slabs: boxes on slab boundaries, far from the origin, ze
     MeshFramePair two;
     add_grid(two, 9, h, offset, ccd::Vec3(0, 0, 0));
     add_grid(two, 9, h, offset + ccd::Vec3(h / 2, h / 4, h), ccd::Vec3(0, 0, -2 * h));
-    std::size_t most = 0;
-    check_layouts(two, 0.0, {0.0, kInf, h, h / 2, 3 * h}, &most);
-    check_layouts(two, h / 8, {0.0, h}, &most);
+    std::size_t most = 0, grid = 0;
+    check_layouts(two, 0.0, {{0.0}, {kInf}, {h}, {h / 2}, {3 * h}, {h, h}, {h / 2, h / 4}, {kInf, h}}, &most, &grid);
+    check_layouts(two, h / 8, {{0.0}, {h}, {h, h}}, &most);
     CHECK(most >= 8);
+    CHECK(grid >= 2);
     // A flat sheet sliding in its plane: zero extent on z, at both frames.
     MeshFramePair flat;
     add_grid(flat, 9, h, offset, ccd::Vec3(h / 2, 0, 0));
-    check_layouts(flat, 0.0, {0.0, kInf, h, 1e-300});
+    check_layouts(flat, 0.0, {{0.0}, {kInf}, {h}, {1e-300}, {h, h}, {1e-300, 1e-300}});
     // All on one line of slabs: a sheet narrower than one slab of the width asked for.
-    check_layouts(flat, 0.0, {64 * h});
+    check_layouts(flat, 0.0, {{64 * h}, {64 * h, 64 * h}});
+  }
+}
+
+TEST_CASE("mesh_sweep's grid: long thin boxes, boxes across every slab, coincident boxes", "[cloth][mesh_ccd]") {
+  const double h = 0x1p-4;
+  for (const double far : {0.0, 0x1p20}) {
+    INFO("offset " << far);
+    const ccd::Vec3 o(far, far, far);
+    MeshFramePair m;
+    add_grid(m, 9, h, o, ccd::Vec3(0, 0, 0));  // still: boxes of zero extent on z
+    add_grid(m, 9, h, o, ccd::Vec3(0, 0, 0));  // the same sheet again: every box coincides with its twin
+    // Long thin boxes: small strips crossing the whole sheet in the step, along x, along y
+    // and diagonally, just above the sheet and through it.
+    add_grid(m, 2, h / 4, o + ccd::Vec3(-h, 3 * h + h / 8, h / 32), ccd::Vec3(10 * h, 0, 0));
+    add_grid(m, 2, h / 4, o + ccd::Vec3(5 * h + h / 8, -h, -h / 32), ccd::Vec3(0, 10 * h, 0));
+    add_grid(m, 2, h / 4, o + ccd::Vec3(0, 0, h), ccd::Vec3(8 * h, 8 * h, -2 * h));
+    // One triangle larger than the sheet falling through it: its box spans every slab on
+    // both axes.
+    const auto big = static_cast<std::uint32_t>(m.x0.size());
+    for (const ccd::Vec3& p : {ccd::Vec3(-h, -h, h / 2), ccd::Vec3(10 * h, -h, h / 2), ccd::Vec3(-h, 10 * h, h / 2)}) {
+      m.x0.push_back(o + p);
+      m.x1.push_back(o + p - ccd::Vec3(0, 0, h));
+    }
+    m.faces.push_back({big, big + 1, big + 2});
+    std::size_t most = 0, grid = 0;
+    check_layouts(m, 0.0,
+                  {{0.0}, {kInf, kInf}, {h, h}, {h / 2, h / 2}, {h, kInf}, {kInf, h}, {h / 4, 3 * h}, {1e-300, 1e-300}},
+                  &most, &grid);
+    check_layouts(m, h / 8, {{0.0}, {h, h}, {1e-300, 1e-300}}, &most, &grid);
+    CHECK(grid >= 4);  // a grid of at least 4 x 4 cells (z spans 2h: 4 slabs of h/2)
   }
 }
 
