@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
+namespace pipeline_image_pairs_test {
+
 namespace {
 
 using ccd::BodyPair;
@@ -148,3 +150,5 @@ TEST_CASE("image pairs: a body pair's contact is the earliest over its image pai
     CHECK(contacts.empty());
   }
 }
+
+}  // namespace pipeline_image_pairs_test

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <limits>
 
+namespace cloth_mesh_ccd_sweep_layout_test {
+
 using namespace ccd::cloth;
 
 namespace {
@@ -85,3 +87,5 @@ TEST_CASE("sweep layout: forced and chosen layouts are within their limits", "[c
       CHECK(choose_sweep_layout(vb, {}, 0.0, 0.0).cells() == 1);  // no edges: one cell
     }
 }
+
+}  // namespace cloth_mesh_ccd_sweep_layout_test
