@@ -7,6 +7,7 @@
 #include "../experiments/work_estimate.hpp"
 
 #include <cloth/ccd/hard_queries.hpp>
+#include <cloth/ccd/near_miss_queries.hpp>
 #include <cloth/cull/cullers.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
@@ -52,8 +53,10 @@ constexpr const char* kCcdDescription =
     "result; rows v, f0, f1, f2 or ea0, ea1, eb0, eb1 at t = 0, then the same at t = 1), runs\n"
     "each one with the conservative inclusion kernel (or, with --exact, the exact rational\n"
     "reference) and prints false negatives, false positives and the time per query (median,\n"
-    "p99.9, max). -o writes JSON with `results` (0/1 per query, in file order) and `seconds`\n"
-    "(per query).\n"
+    "p99.9, max), and why the kernel reported each contact: proved (in floating point),\n"
+    "exact (a tolerance stop decided by the exact reference), tolerance (a tolerance stop kept\n"
+    "as a contact: --keep-tolerance-stops) or budget. -o writes JSON with `results` (0/1 per\n"
+    "query, in file order), `seconds` (per query) and the split.\n"
     "\n"
     "Mesh frames (FRAME0 FRAME1: PLY or OBJ files of one triangle mesh, same faces; every vertex\n"
     "moves linearly from FRAME0 at t = 0 to FRAME1 at t = 1): finds the vertex-face and edge-edge\n"
@@ -61,8 +64,8 @@ constexpr const char* kCcdDescription =
     "Prints a summary; -o writes ccdlab-mesh-ccd/1 JSON (docs/formats.md).\n"
     "\n"
     "usage: ccdlab ccd FILE.csv --kind vf|ee [-o OUT.json] [--separation D] [--tolerance T]\n"
-    "                  [--max-boxes N] [--exact] [--force]\n"
-    "       ccdlab ccd --write-hard --kind vf|ee -o FILE.csv\n"
+    "                  [--max-boxes N] [--keep-tolerance-stops] [--exact] [--force]\n"
+    "       ccdlab ccd --write-hard|--write-near-miss --kind vf|ee -o FILE.csv\n"
     "       ccdlab ccd FRAME0 FRAME1 [-o OUT.json] [--separation D] [--cull NAME] [--threads N]\n"
     "                  [--exact] [--quiet]\n";
 
@@ -70,7 +73,7 @@ constexpr const char* kCcdDescription =
 struct CcdArguments {
   std::vector<std::string> files;
   std::string out_path, kind_text;
-  bool exact = false, write_hard = false, force = false, quiet = false;
+  bool exact = false, write_hard = false, write_near_miss = false, force = false, quiet = false;
   ccd::cloth::TriangleCcdOptions query;
   MeshCcdArgs mesh;
   std::vector<CLI::Option*> query_only, mesh_only;
@@ -96,6 +99,12 @@ void declare_ccd_options(CommandLine& cli, CcdArguments& a) {
       cli.flag("--write-hard", a.write_hard,
                "write ccdlab's hand-built hard queries to -o FILE.csv (expected result decided\n"
                "exactly); takes no query file"),
+      cli.flag("--write-near-miss", a.write_near_miss,
+               "write ccdlab's near-miss queries (misses and touches by 2^-27 to 2^-40) to\n"
+               "-o FILE.csv (expected result decided exactly); takes no query file"),
+      cli.flag("--keep-tolerance-stops", a.query.keep_tolerance_stops,
+               "query files: report the kernel's tolerance stops as contacts, undecided\n"
+               "(without the hull, root and exact decisions: for measurement)"),
       cli.flag("--force", a.force,
                "query files: read one larger than 1e9 bytes (refused before the work\n"
                "otherwise); FILE.csv must be a regular file (not a folder or a device)")};
@@ -159,16 +168,18 @@ int run_ccd(std::span<const std::string> args) {
   }
   const std::string input = a.files.empty() ? std::string() : a.files[0];
   const std::string& out_path = a.out_path;
-  const bool exact = a.exact, write_hard = a.write_hard, force = a.force;
+  const bool exact = a.exact, write_hard = a.write_hard, write_near_miss = a.write_near_miss, force = a.force;
   const ccd::cloth::TriangleCcdOptions& options = a.query;
   const PrimitivePair kind = a.kind_text == "vf" ? PrimitivePair::VertexFace : PrimitivePair::EdgeEdge;
   try {
-    if (write_hard) {
-      if (!input.empty() || out_path.empty()) cli.fail("--write-hard takes no query file and needs -o FILE.csv");
+    if (write_hard || write_near_miss) {
+      const std::string flag = write_hard ? "--write-hard" : "--write-near-miss";
+      if (write_hard && write_near_miss) cli.fail("--write-hard and --write-near-miss write one file each: give one");
+      if (!input.empty() || out_path.empty()) cli.fail(flag + " takes no query file and needs -o FILE.csv");
       ccd::OutputFile output(out_path);
       std::vector<ccd::cloth::LinearQuery> queries;
       std::vector<bool> expected;
-      for (const auto& c : ccd::cloth::hard_queries(kind)) {
+      for (const auto& c : write_hard ? ccd::cloth::hard_queries(kind) : ccd::cloth::near_miss_queries(kind)) {
         queries.push_back(c.query);
         expected.push_back(ccd::cloth::exact_contact(kind, ccd::cloth::to_rational(c.query), 0));  // decided exactly
       }
@@ -186,7 +197,8 @@ int run_ccd(std::span<const std::string> args) {
     const std::size_t n = file.queries.size();
     std::vector<int> results(n);
     std::vector<double> seconds(n);
-    std::size_t false_negatives = 0, false_positives = 0, positives = 0, budget_spent = 0, degenerate = 0;
+    std::size_t false_negatives = 0, false_positives = 0, positives = 0, degenerate = 0, decided_exactly = 0;
+    std::size_t reasons[5] = {0, 0, 0, 0, 0};  // by HitReason
     for (std::size_t i = 0; i < n; ++i) {
       bool hit = false;
       const auto start = std::chrono::steady_clock::now();
@@ -195,7 +207,8 @@ int run_ccd(std::span<const std::string> args) {
       } else {
         const auto r = ccd::cloth::triangle_ccd(kind, file.queries[i], options);
         hit = r.status != ccd::QueryStatus::Miss;  // Degenerate counts as a possible contact
-        budget_spent += r.budget_spent;
+        ++reasons[static_cast<int>(r.reason)];
+        decided_exactly += r.decided_exactly;
         degenerate += r.status == ccd::QueryStatus::Degenerate;
       }
       seconds[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -215,7 +228,13 @@ int run_ccd(std::span<const std::string> args) {
               << "false positives: " << false_positives << " of " << n - positives << " without contact\n"
               << "time per query: median " << micros(median) << ", p99.9 " << micros(p999) << ", max " << micros(worst)
               << "\n";
-    if (budget_spent) std::cout << "budget spent (reported as contact): " << budget_spent << "\n";
+    using ccd::cloth::HitReason;
+    const auto count = [&](HitReason r) { return reasons[static_cast<int>(r)]; };
+    if (!exact)
+      std::cout << "contacts reported: " << count(HitReason::Proved) << " proved, " << count(HitReason::Exact)
+                << " decided exactly, " << count(HitReason::Tolerance) << " tolerance stops, "
+                << count(HitReason::Budget) << " budget spent; exact reference called on " << decided_exactly
+                << " queries\n";
     if (degenerate) std::cout << "degenerate input (reported as contact): " << degenerate << "\n";
     if (file.inexact_coordinates)
       std::cout << "note: " << file.inexact_coordinates
@@ -226,10 +245,21 @@ int run_ccd(std::span<const std::string> args) {
       j["file"] = ccd::escape_invalid_utf8(input);
       j["kind"] = std::string(to_string(kind));
       j["method"] = exact ? "exact" : "inclusion";
-      j["options"] = {{"separation", options.separation}, {"tolerance", options.tolerance}, {"max_boxes", options.max_boxes}};
+      j["options"] = {{"separation", options.separation},
+                      {"tolerance", options.tolerance},
+                      {"max_boxes", options.max_boxes},
+                      {"keep_tolerance_stops", options.keep_tolerance_stops}};
       j["queries"] = n;
       j["false_negatives"] = false_negatives;
       j["false_positives"] = false_positives;
+      if (!exact) {
+        j["hits"] = {{"proved", count(HitReason::Proved)},
+                     {"exact", count(HitReason::Exact)},
+                     {"tolerance", count(HitReason::Tolerance)},
+                     {"budget", count(HitReason::Budget)},
+                     {"degenerate", degenerate}};
+        j["decided_exactly"] = decided_exactly;
+      }
       j["seconds_median"] = median;
       j["seconds_p999"] = p999;
       j["seconds_max"] = worst;

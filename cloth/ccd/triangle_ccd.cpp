@@ -1,6 +1,9 @@
 #include "triangle_ccd.hpp"
 
+#include <cloth/ccd/hull_direction.hpp>
 #include <cloth/ccd/parameter_box.hpp>
+#include <cloth/ccd/root_proof.hpp>
+#include <cloth/exact/exact_ccd.hpp>
 
 #include <algorithm>
 #include <array>
@@ -50,6 +53,35 @@ Centred centred(const LinearQuery& in) {
   return c;
 }
 
+enum class StopDecision { Excluded, Contact, ExactContact, ExactMiss };
+
+// Boxes examined before every box also tries the hull's nearest point (cheap tests first:
+// most queries are decided within a few dozen boxes).
+constexpr std::uint32_t kHullAfterBoxes = 64;
+
+// The box is excluded along the nearest point to the origin of the hull of its corner values.
+bool excluded_along_hull(const CornerValues& c, double separation, double err) {
+  double points[10][3];
+  int n = 0;
+  for (int it = 0; it < 2; ++it)
+    for (int i = 0; i < c.n; ++i, ++n)
+      for (int k = 0; k < 3; ++k) points[n][k] = c.f[it][i][k];
+  double dir[3];
+  return detail::hull_nearest_point(points, n, dir) && detail::excluded_along(dir, c, separation, err);
+}
+
+// A tolerance stop decided (triangle_ccd.hpp): excluded along the hull's nearest point,
+// a proved zero of F, or the exact reference on the original query.
+template <PrimitivePair Kind>
+StopDecision decide_stop(const LinearQuery& original, const LinearQuery& q, const detail::ParameterBox& box,
+                         const CornerValues& c, double separation, double err, double& t_upper) {
+  if (excluded_along_hull(c, separation, err)) return StopDecision::Excluded;
+  const double centre[3] = {0.5 * (box.lo[0] + box.hi[0]), 0.5 * (box.lo[1] + box.hi[1]), 0.5 * (box.lo[2] + box.hi[2])};
+  if (detail::proves_root(Kind, q, err, centre, t_upper)) return StopDecision::Contact;
+  const mpq_class sep(separation);  // exact
+  return exact_contact(Kind, to_rational(original), sep * sep) ? StopDecision::ExactContact : StopDecision::ExactMiss;
+}
+
 template <PrimitivePair Kind>
 TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt) {
   TriangleCcdResult result;
@@ -88,6 +120,7 @@ TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt
     if (result.boxes == opt.max_boxes) {
       result.status = QueryStatus::Hit;
       result.budget_spent = true;
+      result.reason = HitReason::Budget;
       result.toi = first_open_time(box.lo[0]);
       return result;
     }
@@ -110,16 +143,38 @@ TriangleCcdResult run(const LinearQuery& original, const TriangleCcdOptions& opt
         }
       if (touching) {
         result.status = QueryStatus::Hit;
+        result.reason = HitReason::Proved;
         result.toi = first_open_time(box.lo[0]);
         result.toi_upper = box.hi[0];
         return result;
       }
     }
     const int dim = detail::split_dimension(c, box);
-    if (width <= width_limit || dim < 0) {
+    const bool stop = width <= width_limit || dim < 0;  // a tolerance stop
+    // A query that needs many boxes (parallel or sliding near misses, where the boxes along
+    // a whole curve of near points stay open) tries the hull's nearest point on every box.
+    if (!opt.keep_tolerance_stops && !stop && result.boxes > kHullAfterBoxes && excluded_along_hull(c, opt.separation, err))
+      continue;
+    if (stop) {
+      result.reason = HitReason::Tolerance;
+      double t_upper = box.hi[0];  // a proved zero's time bound
+      if (!opt.keep_tolerance_stops) {
+        const StopDecision d = decide_stop<Kind>(original, q, box, c, opt.separation, err, t_upper);
+        if (d == StopDecision::Excluded) {
+          result.reason = HitReason::None;
+          continue;
+        }
+        result.decided_exactly = d != StopDecision::Contact;
+        if (d == StopDecision::ExactMiss) {
+          result.reason = HitReason::None;
+          break;
+        }
+        result.reason = d == StopDecision::Contact ? HitReason::Proved : HitReason::Exact;
+      }
       result.status = QueryStatus::Hit;
       result.toi = first_open_time(box.lo[0]);
       if (width <= width_limit) result.toi_upper = box.hi[0];
+      if (result.reason == HitReason::Proved) result.toi_upper = std::min(result.toi_upper, t_upper);
       return result;
     }
     detail::push_halves(box, dim, stack);

@@ -22,10 +22,19 @@
 //
 // With a separation > 0, Hit is also reported, proved, when some corner's |F| plus its
 // error bound is within the separation (a contact found long before the boxes get narrow).
-// Otherwise Hit is reported when a box's image is narrower than `tolerance` times the query's extent
-// (its largest coordinate range over the eight points)
-// (so a false positive is a near miss within about that distance), or when the budget of
-// boxes is spent. Vertex-face boxes wholly outside a + b <= 1 are dropped.
+// A box whose image is narrower than `tolerance` times the query's extent (its largest
+// coordinate range over the eight points), or that cannot be split further, is a
+// tolerance stop. It is decided, in order: the box is excluded along the nearest point to
+// the origin of the hull of its corner values (hull_direction.hpp: a near miss is
+// resolved at once, since the hull of a narrow box hugs F's image); a zero of F is proved
+// in a small box around Newton's root (root_proof.hpp: a transversal crossing); otherwise
+// the exact reference (exact_ccd.hpp) decides the whole query on its doubles, a rare
+// last resort (contact exactly at t = 0 or 1, on a primitive's boundary, a tangent or
+// coplanar touch, or a miss within the rounding bound). With keep_tolerance_stops every
+// tolerance stop is reported as a contact instead (a false positive is then a near miss
+// within about tolerance x extent): the kernel without its exact fallback. When the
+// budget of boxes is spent, Hit is reported (conservative). Vertex-face boxes wholly
+// outside a + b <= 1 are dropped.
 //
 // Degenerate-case policy: degenerate triangles and edges are handled as closed convex
 // hulls (no special case is needed: the parametrisation covers them). Input that is not
@@ -36,13 +45,27 @@
 
 #include <cstdint>
 #include <limits>
+#include <string_view>
 
 namespace ccd::cloth {
 
+/// Why a Hit was reported. Proved: a contact proved in floating point (a corner within the
+/// separation, or a zero of F); Exact: a tolerance stop decided by the exact reference;
+/// Tolerance: a tolerance stop reported as it is (keep_tolerance_stops); Budget: max_boxes
+/// spent. None for Miss and Degenerate.
+enum class HitReason : std::uint8_t { None, Proved, Exact, Tolerance, Budget };
+
+/// "none", "proved", "exact", "tolerance", "budget".
+constexpr std::string_view to_string(HitReason r) {
+  constexpr std::string_view names[] = {"none", "proved", "exact", "tolerance", "budget"};
+  return names[static_cast<int>(r)];
+}
+
 struct TriangleCcdOptions {
   double separation = 0.0;          ///< minimum separation, scene units, >= 0
-  double tolerance = 1e-9;          ///< image width reported as contact, relative to the query's extent
+  double tolerance = 1e-9;          ///< image width of a tolerance stop, relative to the query's extent
   std::uint32_t max_boxes = 20000;  ///< budget of parameter boxes; spent = Hit (conservative)
+  bool keep_tolerance_stops = false;  ///< report tolerance stops as Hit, undecided (for measurement)
 };
 
 struct TriangleCcdResult {
@@ -56,6 +79,8 @@ struct TriangleCcdResult {
   double toi_upper = std::numeric_limits<double>::infinity();
   std::uint32_t boxes = 0;                 ///< parameter boxes examined
   bool budget_spent = false;               ///< Hit because max_boxes ran out
+  HitReason reason = HitReason::None;      ///< why a Hit was reported
+  bool decided_exactly = false;            ///< a tolerance stop was handed to the exact reference (Hit or Miss)
 };
 
 TriangleCcdResult triangle_ccd(PrimitivePair kind, const LinearQuery& q, const TriangleCcdOptions& options = {});
