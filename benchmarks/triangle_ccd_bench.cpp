@@ -9,7 +9,9 @@
 // (median_us, p999_us, max_us). Argument 0: the steady clock around each call (cheap, but
 // on a shared machine the tail holds the time the thread was descheduled). Argument 1: the
 // thread's CPU clock (time spent elsewhere is not counted, but each reading is a system
-// call of about 0.3 us, which every figure includes).
+// call of about 0.3 us, which every figure includes). Argument 2 of the random sets: 1 runs
+// the kernel with keep_tolerance_stops (tolerance stops reported as contacts, undecided),
+// 0 as it is by default (tolerance stops decided): before and after, in one run.
 // Run: ./build/triangle_ccd_bench --benchmark_counters_tabular=true
 #include <cloth/ccd/hard_queries.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
@@ -73,13 +75,15 @@ void run_exact(benchmark::State& state, PrimitivePair kind, const std::vector<Li
 }
 
 void run_quantiles(benchmark::State& state, PrimitivePair kind, const std::vector<LinearQuery>& set) {
+  ccd::cloth::TriangleCcdOptions options;
+  options.keep_tolerance_stops = state.range(1) != 0;
   std::vector<double> us;
   for (auto _ : state)
     for (const LinearQuery& q : set) {
       const clockid_t clock = state.range(0) == 0 ? CLOCK_MONOTONIC : CLOCK_THREAD_CPUTIME_ID;
       timespec t0{}, t1{};
       clock_gettime(clock, &t0);
-      const auto r = ccd::cloth::triangle_ccd(kind, q);
+      const auto r = ccd::cloth::triangle_ccd(kind, q, options);
       clock_gettime(clock, &t1);
       benchmark::DoNotOptimize(r);
       us.push_back(static_cast<double>(t1.tv_sec - t0.tv_sec) * 1e6 + static_cast<double>(t1.tv_nsec - t0.tv_nsec) * 1e-3);
@@ -106,10 +110,11 @@ BENCHMARK(BM_Kernel_VF_Hard);
 BENCHMARK(BM_Kernel_EE_Hard);
 BENCHMARK(BM_Kernel_VF_Random);
 BENCHMARK(BM_Kernel_EE_Random);
-BENCHMARK(BM_Kernel_VF_Random_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Kernel_EE_Random_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_Kernel_VF_Hard_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Kernel_EE_Hard_Quantiles)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+// Arguments: clock (0 steady, 1 thread CPU), keep_tolerance_stops (1) or not (0).
+BENCHMARK(BM_Kernel_VF_Random_Quantiles)->ArgsProduct({{0, 1}, {1, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel_EE_Random_Quantiles)->ArgsProduct({{0, 1}, {1, 0}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Kernel_VF_Hard_Quantiles)->ArgsProduct({{0, 1}, {0}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Kernel_EE_Hard_Quantiles)->ArgsProduct({{0, 1}, {0}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Exact_VF_Hard)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Exact_EE_Hard)->Unit(benchmark::kMicrosecond);
 

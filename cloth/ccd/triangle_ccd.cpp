@@ -56,8 +56,8 @@ Centred centred(const LinearQuery& in) {
 enum class StopDecision { Excluded, Contact, ExactContact, ExactMiss };
 
 // Boxes examined before every box also tries the hull's nearest point (cheap tests first:
-// most queries are decided within a few dozen boxes).
-constexpr std::uint32_t kHullAfterBoxes = 64;
+// random queries, contacts included, are decided within some 300 boxes).
+constexpr std::uint32_t kHullAfterBoxes = 1024;
 
 // The box is excluded along the nearest point to the origin of the hull of its corner values.
 bool excluded_along_hull(const CornerValues& c, double separation, double err) {
@@ -70,14 +70,14 @@ bool excluded_along_hull(const CornerValues& c, double separation, double err) {
   return detail::hull_nearest_point(points, n, dir) && detail::excluded_along(dir, c, separation, err);
 }
 
-// A tolerance stop decided (triangle_ccd.hpp): excluded along the hull's nearest point,
-// a proved zero of F, or the exact reference on the original query.
+// A tolerance stop decided (triangle_ccd.hpp): a proved zero of F, the box excluded along
+// the hull's nearest point, or the exact reference on the original query.
 template <PrimitivePair Kind>
 StopDecision decide_stop(const LinearQuery& original, const LinearQuery& q, const detail::ParameterBox& box,
                          const CornerValues& c, double separation, double err, double& t_upper) {
-  if (excluded_along_hull(c, separation, err)) return StopDecision::Excluded;
   const double centre[3] = {0.5 * (box.lo[0] + box.hi[0]), 0.5 * (box.lo[1] + box.hi[1]), 0.5 * (box.lo[2] + box.hi[2])};
-  if (detail::proves_root(Kind, q, err, centre, t_upper)) return StopDecision::Contact;
+  if (detail::proves_root(Kind, q, err, centre, t_upper)) return StopDecision::Contact;  // the cheaper test first
+  if (excluded_along_hull(c, separation, err)) return StopDecision::Excluded;
   const mpq_class sep(separation);  // exact
   return exact_contact(Kind, to_rational(original), sep * sep) ? StopDecision::ExactContact : StopDecision::ExactMiss;
 }
