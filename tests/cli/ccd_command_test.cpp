@@ -54,6 +54,60 @@ TEST_CASE("ccdlab ccd runs the shipped hard query files without a miss", "[cloth
   }
 }
 
+TEST_CASE("ccdlab ccd runs the shipped near-miss query files and reports why it reported contacts", "[cloth][cli]") {
+  Folder dir;
+  // Counts as measured (docs/cloth.md, Figures): without and with --keep-tolerance-stops.
+  struct Expected {
+    std::string kind;
+    int false_positives, proved, exact, tolerance, budget, keep_false_positives, keep_tolerance, keep_budget;
+  };
+  for (const Expected& e : {Expected{"vf", 3, 81, 69, 0, 3, 16, 159, 7}, Expected{"ee", 17, 67, 78, 0, 22, 93, 194, 49}}) {
+    INFO(e.kind);
+    const std::string file = data("near_miss_" + e.kind + ".csv");
+    std::string out;
+    REQUIRE(run_ccd(file + " --kind " + e.kind + " -o " + (dir / "r.json"), dir, &out) == 0);
+    CHECK(out.find("false negatives: 0\n") != std::string::npos);
+    CHECK(out.find("contacts reported: " + std::to_string(e.proved) + " proved, " + std::to_string(e.exact) +
+                   " decided exactly, 0 tolerance stops, " + std::to_string(e.budget) + " budget spent") !=
+          std::string::npos);
+    std::ifstream in(dir / "r.json");
+    const json r = json::parse(in);
+    CHECK(r["queries"] == 300);
+    CHECK(r["false_negatives"] == 0);
+    CHECK(r["false_positives"] == e.false_positives);
+    CHECK(r["hits"]["proved"] == e.proved);
+    CHECK(r["hits"]["exact"] == e.exact);
+    CHECK(r["hits"]["tolerance"] == e.tolerance);
+    CHECK(r["hits"]["budget"] == e.budget);
+    CHECK(r["decided_exactly"] == e.exact);  // here every exactly decided query is a contact
+    CHECK(r["options"]["keep_tolerance_stops"] == false);
+    // The flag restores the kernel without its decisions: every tolerance stop a contact.
+    REQUIRE(run_ccd(file + " --kind " + e.kind + " --keep-tolerance-stops -o " + (dir / "k.json"), dir, &out) == 0);
+    std::ifstream kin(dir / "k.json");
+    const json k = json::parse(kin);
+    CHECK(k["false_negatives"] == 0);
+    CHECK(k["false_positives"] == e.keep_false_positives);
+    CHECK(k["hits"]["proved"] == 0);
+    CHECK(k["hits"]["exact"] == 0);
+    CHECK(k["hits"]["tolerance"] == e.keep_tolerance);
+    CHECK(k["hits"]["budget"] == e.keep_budget);
+    CHECK(k["options"]["keep_tolerance_stops"] == true);
+    // The exact reference reproduces the expected column, and the files are what
+    // --write-near-miss writes today.
+    REQUIRE(run_ccd(file + " --kind " + e.kind + " --exact -o " + (dir / "x.json"), dir, &out) == 0);
+    std::ifstream xin(dir / "x.json");
+    const json x = json::parse(xin);
+    CHECK(x["false_negatives"] == 0);
+    CHECK(x["false_positives"] == 0);
+    CHECK_FALSE(x.contains("hits"));
+    REQUIRE(run_ccd("--write-near-miss --kind " + e.kind + " -o " + (dir / "n.csv"), dir) == 0);
+    std::ifstream a(file), b(dir / "n.csv");
+    CHECK(std::string(std::istreambuf_iterator<char>(a), {}) == std::string(std::istreambuf_iterator<char>(b), {}));
+  }
+  std::string err;
+  CHECK(run_ccd("--write-near-miss --write-hard --kind vf -o " + (dir / "n.csv"), dir, nullptr, &err) == 2);
+}
+
 TEST_CASE("ccdlab ccd rejects bad input with exit 2 and one line", "[cloth][cli]") {
   Folder dir;
   std::string err;

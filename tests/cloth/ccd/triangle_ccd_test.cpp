@@ -1,4 +1,6 @@
 #include <cloth/ccd/hard_queries.hpp>
+#include <cloth/ccd/hull_direction.hpp>
+#include <cloth/ccd/near_miss_queries.hpp>
 #include <cloth/ccd/triangle_ccd.hpp>
 #include <cloth/exact/exact_ccd.hpp>
 
@@ -10,6 +12,8 @@
 namespace cloth_ccd_triangle_ccd_test {
 
 using ccd::QueryStatus;
+using ccd::cloth::HitReason;
+using ccd::cloth::near_miss_queries;
 using ccd::Vec3;
 using ccd::cloth::exact_contact;
 using ccd::cloth::hard_queries;
@@ -254,6 +258,149 @@ TEST_CASE("triangle CCD finds constructed contacts anywhere on the primitives", 
     ++checked;
   }
   CHECK(checked > 1000);
+}
+
+namespace {
+
+// The kernel's answers on a query set, against the exact reference.
+struct SetTally {
+  int false_positives = 0, proved = 0, exact = 0, tolerance = 0, budget = 0, decided_exactly = 0;
+};
+
+SetTally run_set(PrimitivePair kind, const std::vector<ccd::cloth::NamedQuery>& set, const TriangleCcdOptions& opt) {
+  SetTally t;
+  for (const auto& c : set) {
+    INFO(c.name);
+    const bool exact = exact_contact(kind, to_rational(c.query), 0);
+    const auto r = triangle_ccd(kind, c.query, opt);
+    REQUIRE((!exact || r.status == QueryStatus::Hit));  // zero false negatives
+    CHECK((r.status == QueryStatus::Hit) == (r.reason != HitReason::None));
+    CHECK(r.budget_spent == (r.reason == HitReason::Budget));
+    // decided_exactly: the exact reference answered, so the answer is the exact one.
+    if (r.decided_exactly) CHECK((r.status == QueryStatus::Hit) == exact);
+    if (r.reason == HitReason::Exact) CHECK(r.decided_exactly);
+    if (r.decided_exactly) CHECK((r.reason == HitReason::Exact || r.reason == HitReason::None));
+    if (!exact && r.status == QueryStatus::Hit) {
+      ++t.false_positives;
+      // Tolerance stops are decided by default: a false positive is a spent budget.
+      if (!opt.keep_tolerance_stops) CHECK(r.reason == HitReason::Budget);
+    }
+    t.proved += r.reason == HitReason::Proved;
+    t.exact += r.reason == HitReason::Exact;
+    t.tolerance += r.reason == HitReason::Tolerance;
+    t.budget += r.reason == HitReason::Budget;
+    t.decided_exactly += r.decided_exactly;
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("triangle CCD decides its tolerance stops: hard and near-miss sets against the exact reference",
+          "[cloth][ccd]") {
+  // The counts as measured (docs/cloth.md, Figures): a change in the kernel that adds a
+  // false positive, or moves contacts between the reasons, fails here. "before" is the
+  // kernel with keep_tolerance_stops (every tolerance stop a contact).
+  struct Expected {
+    PrimitivePair kind;
+    bool near_miss;
+    SetTally after, before;
+  };
+  const Expected sets[] = {
+      // {false positives, proved, exact, tolerance, budget, decided exactly}
+      {PrimitivePair::VertexFace, false, {0, 8, 24, 0, 0, 24}, {0, 0, 0, 32, 0, 0}},
+      {PrimitivePair::EdgeEdge, false, {0, 2, 28, 0, 0, 28}, {0, 0, 0, 30, 0, 0}},
+      {PrimitivePair::VertexFace, true, {3, 81, 69, 0, 3, 69}, {16, 0, 0, 159, 7, 0}},
+      {PrimitivePair::EdgeEdge, true, {17, 67, 78, 0, 22, 78}, {93, 0, 0, 194, 49, 0}},
+  };
+  for (const Expected& e : sets) {
+    INFO(to_string(e.kind) << (e.near_miss ? " near-miss" : " hard"));
+    const auto set = e.near_miss ? near_miss_queries(e.kind) : hard_queries(e.kind);
+    TriangleCcdOptions keep;
+    keep.keep_tolerance_stops = true;
+    for (const bool before : {false, true}) {
+      INFO((before ? "keep_tolerance_stops" : "default"));
+      const SetTally t = run_set(e.kind, set, before ? keep : TriangleCcdOptions{});
+      const SetTally& x = before ? e.before : e.after;
+      CHECK(t.false_positives == x.false_positives);
+      CHECK(t.proved == x.proved);
+      CHECK(t.exact == x.exact);
+      CHECK(t.tolerance == x.tolerance);
+      CHECK(t.budget == x.budget);
+      CHECK(t.decided_exactly == x.decided_exactly);
+    }
+  }
+}
+
+TEST_CASE("near-miss queries are what they are meant to be", "[cloth][ccd]") {
+  // Each case's intended answer (a miss or a touch by 2^-27 to 2^-40) is the exact one: the
+  // rotation and the move far from the origin round far below the gaps.
+  for (PrimitivePair kind : {PrimitivePair::VertexFace, PrimitivePair::EdgeEdge}) {
+    const auto set = near_miss_queries(kind);
+    CHECK(set.size() == 300);
+    int contacts = 0;
+    for (const auto& c : set) {
+      INFO(c.name);
+      CHECK(exact_contact(kind, to_rational(c.query), 0) == c.contact);
+      contacts += c.contact;
+    }
+    CHECK(contacts == 150);
+  }
+}
+
+TEST_CASE("triangle CCD proves a transversal crossing and hands a touch on the boundary to the exact reference",
+          "[cloth][ccd]") {
+  const Vec3 f0(0, 0, 0), f1(1, 0, 0), f2(0, 1, 0);
+  auto through = [&](double x, double y) { return LinearQuery{{Vec3(x, y, 1), f0, f1, f2, Vec3(x, y, -1), f0, f1, f2}}; };
+  SECTION("through the interior: a zero of F proved in floating point") {
+    const auto r = triangle_ccd(PrimitivePair::VertexFace, through(0.25, 0.25));
+    CHECK(r.reason == HitReason::Proved);
+    CHECK_FALSE(r.decided_exactly);
+    CHECK(r.toi <= 0.5);
+    CHECK(r.toi_upper >= 0.5);
+    CHECK(r.toi_upper - r.toi < 1e-6);
+  }
+  SECTION("through an edge's midpoint: the zero is on the domain's boundary, decided exactly") {
+    const auto r = triangle_ccd(PrimitivePair::VertexFace, through(0.5, 0));
+    CHECK(r.status == QueryStatus::Hit);
+    CHECK(r.reason == HitReason::Exact);
+    CHECK(r.decided_exactly);
+  }
+  SECTION("beside the edge by 2^-40: no zero to prove; excluded, a miss") {
+    const auto r = triangle_ccd(PrimitivePair::VertexFace, through(0.5, -0x1p-40));
+    CHECK(r.status == QueryStatus::Miss);
+    CHECK(r.reason == HitReason::None);
+    TriangleCcdOptions keep;
+    keep.keep_tolerance_stops = true;
+    const auto k = triangle_ccd(PrimitivePair::VertexFace, through(0.5, -0x1p-40), keep);
+    CHECK(k.status == QueryStatus::Hit);  // the tolerance stop kept: a false positive
+    CHECK(k.reason == HitReason::Tolerance);
+  }
+}
+
+TEST_CASE("hull_nearest_point finds the nearest point of a hull, or says the origin is inside", "[cloth][ccd]") {
+  using ccd::cloth::detail::hull_nearest_point;
+  double out[3];
+  SECTION("a square face at x = 1, seen from the origin") {
+    const double p[4][3] = {{1, 1, 1}, {1, -1, 1}, {1, 1, -1}, {1, -1, -1}};
+    REQUIRE(hull_nearest_point(p, 4, out));
+    CHECK(std::abs(out[0] - 1) < 1e-15);
+    CHECK(std::abs(out[1]) < 1e-15);
+    CHECK(std::abs(out[2]) < 1e-15);
+  }
+  SECTION("a segment passing the origin at distance 2^-20, with a far point") {
+    const double p[3][3] = {{0x1p-20, -1, 0}, {0x1p-20, 3, 0}, {5, 5, 5}};
+    REQUIRE(hull_nearest_point(p, 3, out));
+    CHECK(std::abs(out[0] - 0x1p-20) < 1e-18);
+    CHECK(std::abs(out[1]) < 1e-15);
+    CHECK(std::abs(out[2]) < 1e-15);
+  }
+  SECTION("the corners of a cube around the origin") {
+    double p[8][3];
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 3; ++k) p[i][k] = (i >> k) & 1 ? 1.0 : -1.0;
+    CHECK_FALSE(hull_nearest_point(p, 8, out));
+  }
 }
 
 }  // namespace cloth_ccd_triangle_ccd_test
