@@ -16,7 +16,8 @@ class Draw {
   explicit Draw(std::uint64_t seed) : rng_(seed) {}
   /// k / 2^bits for k uniform in [lo 2^bits, hi 2^bits]: dyadic, exact.
   double dyadic(double lo, double hi, int bits) {
-    const auto klo = static_cast<std::int64_t>(std::ldexp(lo, bits)), khi = static_cast<std::int64_t>(std::ldexp(hi, bits));
+    const auto klo = static_cast<std::int64_t>(std::ldexp(lo, bits)),
+               khi = static_cast<std::int64_t>(std::ldexp(hi, bits));
     const auto k = klo + static_cast<std::int64_t>(rng_() % static_cast<std::uint64_t>(khi - klo + 1));
     return std::ldexp(static_cast<double>(k), -bits);
   }
@@ -41,8 +42,8 @@ struct Family {
   bool exact_frame = false;
 };
 
-LinearQuery make(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& q0, const Vec3& q1,
-                 const Vec3& q2, const Vec3& q3) {
+LinearQuery make(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& q0,
+                 const Vec3& q1, const Vec3& q2, const Vec3& q3) {
   return LinearQuery{{p0, p1, p2, p3, q0, q1, q2, q3}};
 }
 
@@ -65,7 +66,9 @@ Face face(Draw& d) {
   const double py = d.dyadic(0.5, 1, 6);
   return {Vec3(0, 0, 0), Vec3(l1, 0, 0), Vec3(px, py, 0)};
 }
-LinearQuery still_face(const Face& f, const Vec3& v0, const Vec3& v1) { return make(v0, f.f0, f.f1, f.f2, v1, f.f0, f.f1, f.f2); }
+LinearQuery still_face(const Face& f, const Vec3& v0, const Vec3& v1) {
+  return make(v0, f.f0, f.f1, f.f2, v1, f.f0, f.f1, f.f2);
+}
 // A line through p, crossing z = 0 there at t = 1/2.
 LinearQuery through(const Face& f, const Vec3& p, Draw& d) {
   Vec3 h = draw_vec(d, -0.5, 0.5, 6);
@@ -156,8 +159,8 @@ const std::vector<Family>& edge_edge_families() {
       {"parallel_sliding",  // b parallel to a at distance g in a's plane, sliding along it (or across)
        [](Draw& d, double g, bool touch) {
          const double la = d.dyadic(0.5, 1, 6), len = d.dyadic(0.25, 1, 6), s = d.dyadic(0.5, 1, 6);
-         return Canonical{against(la, Vec3(-s, g, 0), Vec3(-s + len, g, 0), Vec3(la + s - len, touch ? -g : g, 0),
-                                  Vec3(la + s, touch ? -g : g, 0)),
+         return Canonical{against(la, Vec3(-s, g, 0), Vec3(-s + len, g, 0),
+                                  Vec3(la + s - len, touch ? -g : g, 0), Vec3(la + s, touch ? -g : g, 0)),
                           touch};
        },
        true},
@@ -165,7 +168,9 @@ const std::vector<Family>& edge_edge_families() {
        [](Draw& d, double g, bool touch) {
          const double la = d.dyadic(0.5, 1, 6), len = d.dyadic(0.25, 1, 6), x = la + (touch ? -g : g);
          const double start = la + d.dyadic(0.25, 1, 6);
-         return Canonical{against(la, Vec3(start, 0, 0), Vec3(start + len, 0, 0), Vec3(x, 0, 0), Vec3(x + len, 0, 0)), touch};
+         return Canonical{
+             against(la, Vec3(start, 0, 0), Vec3(start + len, 0, 0), Vec3(x, 0, 0), Vec3(x + len, 0, 0)),
+             touch};
        },
        true},
       {"nearly_parallel",  // b tilted by about g, falling through a's plane beside it (or across)
@@ -225,10 +230,11 @@ std::vector<NamedQuery> build(const std::vector<Family>& families, const std::st
         for (int i = 0; i < kNear + kFar; ++i) {
           const bool far = i >= kNear;
           const Canonical c = family.make(d, std::ldexp(1.0, -e), touch);
-          const LinearQuery q = far ? placed(c.q, d, 1024.0, Vec3(1048576, -1048576, 524288), family.exact_frame && touch)
-                                    : placed(c.q, d, 1.0, Vec3(0, 0, 0), family.exact_frame && touch);
-          out.push_back({prefix + family.name + (touch ? "_over_2^-" : "_by_2^-") + std::to_string(e) + (far ? "_far" : "") + "_" +
-                             std::to_string(i),
+          const LinearQuery q =
+              far ? placed(c.q, d, 1024.0, Vec3(1048576, -1048576, 524288), family.exact_frame && touch)
+                  : placed(c.q, d, 1.0, Vec3(0, 0, 0), family.exact_frame && touch);
+          out.push_back({prefix + family.name + (touch ? "_over_2^-" : "_by_2^-") + std::to_string(e) +
+                             (far ? "_far" : "") + "_" + std::to_string(i),
                          q, c.contact});
         }
   return out;

@@ -60,7 +60,8 @@ bool miranda(const LinearQuery& q, const ParameterBox& box, const double (&A)[3]
   CornerValues c;
   evaluate_corners<Kind>(q, box, c);
   if (c.n != 4) return false;
-  constexpr int a_hi[4] = {0, 1, Kind == PrimitivePair::VertexFace ? 1 : 0, Kind == PrimitivePair::VertexFace ? 0 : 1};
+  constexpr int a_hi[4] = {0, 1, Kind == PrimitivePair::VertexFace ? 1 : 0,
+                           Kind == PrimitivePair::VertexFace ? 0 : 1};
   constexpr int b_hi[4] = {0, 0, 1, 1};
   for (int i = 0; i < 3; ++i) {
     const double n1 = std::abs(A[i][0]) + std::abs(A[i][1]) + std::abs(A[i][2]);
@@ -88,7 +89,8 @@ bool miranda(const LinearQuery& q, const ParameterBox& box, const double (&A)[3]
 }  // namespace
 }  // namespace root_proof
 
-bool proves_root(PrimitivePair kind, const LinearQuery& q, double err, const double (&start)[3], double& t_upper) {
+bool proves_root(PrimitivePair kind, const LinearQuery& q, double err, const double (&start)[3],
+                 double& t_upper) {
   double p[3] = {start[0], start[1], start[2]}, f[3], j[3][3], A[3][3];
   for (int iter = 0; iter < 6; ++iter) {
     root_proof::value_and_jacobian(kind, q, p, f, j);
@@ -119,8 +121,9 @@ bool proves_root(PrimitivePair kind, const LinearQuery& q, double err, const dou
       inside = inside && box.lo[d] >= 0.0 && box.hi[d] <= 1.0;
     }
     if (!inside || (kind == PrimitivePair::VertexFace && box.hi[1] + box.hi[2] > 1.0)) continue;
-    const bool proved = kind == PrimitivePair::VertexFace ? root_proof::miranda<PrimitivePair::VertexFace>(q, box, A, err)
-                                                          : root_proof::miranda<PrimitivePair::EdgeEdge>(q, box, A, err);
+    const bool proved = kind == PrimitivePair::VertexFace
+                            ? root_proof::miranda<PrimitivePair::VertexFace>(q, box, A, err)
+                            : root_proof::miranda<PrimitivePair::EdgeEdge>(q, box, A, err);
     if (proved) {
       t_upper = box.hi[0];
       return true;

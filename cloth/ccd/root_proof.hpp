@@ -25,6 +25,7 @@ namespace ccd::cloth::detail {
 /// q: the query as the kernel searches it; err: the error bound of one component of a
 /// corner value of F (parameter_box.hpp); start: (t, a, b) to start Newton from. On
 /// success, t_upper gets the largest t of the proving box (a contact at a t <= t_upper).
-bool proves_root(PrimitivePair kind, const LinearQuery& q, double err, const double (&start)[3], double& t_upper);
+bool proves_root(PrimitivePair kind, const LinearQuery& q, double err, const double (&start)[3],
+                 double& t_upper);
 
 }  // namespace ccd::cloth::detail
