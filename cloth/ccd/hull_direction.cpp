@@ -77,6 +77,28 @@ bool nearest_on_simplex(double (&s)[4][3], int& n, double (&v)[3]) {
   return true;
 }
 
+// a d - b c with one rounding's relative error (Kahan's algorithm with fma).
+double det2(double a, double b, double c, double d) {
+  const double w = b * c;
+  const double e = std::fma(-b, c, w);
+  const double f = std::fma(a, d, -w);
+  return f + e;
+}
+
+// For a nearest point inside the segment s0 s1: the direction e x (s0 x s1), e = s1 - s0,
+// which is s0 minus its projection on e, scaled by |e|^2. The cross product s0 x s1 is
+// formed with relative accuracy (det2), so the direction is accurate to a few eps even when
+// the segment passes the origin at a distance far below |s0| (a plain projection loses it
+// to cancellation: about eps |s0| of error, which decides nothing on a box much larger than
+// the gap).
+void segment_direction(const double* s0, const double* s1, double (&v)[3]) {
+  const double c[3] = {det2(s0[1], s0[2], s1[1], s1[2]), det2(s0[2], s0[0], s1[2], s1[0]),
+                       det2(s0[0], s0[1], s1[0], s1[1])};
+  const double e[3] = {s1[0] - s0[0], s1[1] - s0[1], s1[2] - s0[2]};
+  const double n[3] = {e[1] * c[2] - e[2] * c[1], e[2] * c[0] - e[0] * c[2], e[0] * c[1] - e[1] * c[0]};
+  if (dot(n, v) > 0) v[0] = n[0], v[1] = n[1], v[2] = n[2];
+}
+
 }  // namespace
 }  // namespace hull
 
@@ -101,8 +123,10 @@ bool hull_nearest_point(const double (*p)[3], int n, double (&out)[3]) {
     ++m;
     if (!hull::nearest_on_simplex(s, m, v)) return false;
   }
+  const bool apart = hull::dot(v, v) > 1e-30 * scale;
+  if (apart && m == 2) hull::segment_direction(s[0], s[1], v);
   for (int c = 0; c < 3; ++c) out[c] = v[c];
-  return hull::dot(v, v) > 1e-30 * scale;
+  return apart;
 }
 
 }  // namespace ccd::cloth::detail
