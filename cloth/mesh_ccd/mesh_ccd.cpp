@@ -40,6 +40,11 @@ class NarrowPhase {
   NarrowPhase(const ClothMesh& mesh, std::span<const Vec3> x0, std::span<const Vec3> x1, const MeshCcdOptions& o)
       : mesh_(mesh), x0_(x0), x1_(x1), exact_(o.exact), keep_(o.keep_candidates) {
     options_.separation = o.separation;
+    // Mesh frames are full of resting and sliding contacts (touches on a boundary, coplanar
+    // pairs) that only the exact reference decides: deciding every tolerance stop took the
+    // narrow phase of a 20,000-face crumpled pair from 3.8 s to 21 s. A tolerance stop is
+    // reported as a contact (conservative); `exact` decides every hit instead.
+    options_.keep_tolerance_stops = true;
     const mpq_class d(o.separation);  // exact
     separation_squared_ = d * d;
   }
