@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -50,8 +51,15 @@ Aabb HornSatBound::build(const StepContext& ctx, std::size_t i) {
   double* t = times_.data() + i * (m_ + 1);
   for (int j = 0; j < m_; ++j) t[j] = scratch_[j].t0;
   t[m_] = scratch_[m_ - 1].t1;
-  const Eigen::Matrix3d frame = folded ? Eigen::Matrix3d::Identity() : velocity_frame(s.velocity);
-  frames_[i] = frame;
+  if (folded) {
+    frames_[i].setIdentity();
+    framed_[i] = 0;
+  } else if (!framed_[i] || std::memcmp(framed_velocity_[i].data(), s.velocity.data(), sizeof(Vec3)) != 0) {
+    // The frame is a function of the velocity's bits: kept while they are unchanged.
+    frames_[i] = velocity_frame(s.velocity);
+    framed_velocity_[i] = s.velocity;
+    framed_[i] = 1;
+  }
   Ends* e = ends_.data() + i * m_;
   for (int j = 0; j < m_; ++j) {
     const Trapezoid& z = scratch_[j];
@@ -70,24 +78,25 @@ Aabb HornSatBound::build(const StepContext& ctx, std::size_t i) {
   return box;
 }
 
-void HornSatBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
-  const std::size_t n = ctx.start.size();
+void HornSatBound::resize(std::size_t n) {
   frames_.resize(n);
+  framed_velocity_.resize(n);
+  framed_.resize(n, 0);
   ends_.resize(n * m_);
   scratch_.resize(m_);
   times_.resize(n * (m_ + 1));
+}
+
+void HornSatBound::prepare(const StepContext& ctx, std::vector<Aabb>& boxes) {
+  const std::size_t n = ctx.start.size();
+  resize(n);
   boxes.resize(n);
   for (std::size_t i = 0; i < n; ++i) boxes[i] = build(ctx, i);
 }
 
 void HornSatBound::refresh(const StepContext& ctx, std::span<const std::uint32_t> bodies, std::span<Aabb> boxes) {
   const std::size_t n = ctx.start.size();
-  if (frames_.size() != n) {  // no prepare before: room for every body
-    frames_.resize(n);
-    ends_.resize(n * m_);
-    scratch_.resize(m_);
-    times_.resize(n * (m_ + 1));
-  }
+  if (frames_.size() != n) resize(n);  // no prepare before: room for every body
   for (const std::uint32_t i : bodies) boxes[i] = build(ctx, i);
 }
 

@@ -10,6 +10,10 @@
 // Zero (or < 1e-100) velocity: the axis-aligned frame.
 // Walls: a body whose horn may pass a wall plane during the step uses the axis-aligned frame
 // with the folded trapezoids of `horn:M` (conservative across reflections).
+// Frames across steps: a body's velocity frame is kept from the step that built it while
+// its velocity at t0 is the same, bit for bit (constant-velocity bodies between wall
+// hits); any other velocity, or a folded step, rebuilds it, so every output is the one a
+// fresh bound computes.
 // Refresh: one body's trapezoids over its own window. Bodies over different windows are
 // compared on the sub-intervals between the union of both bodies' breakpoints (each
 // oriented trapezoid restricted by linear interpolation, half-widths widened by the
@@ -41,9 +45,12 @@ class HornSatBound final : public Bound {
     Vec3 c0, c1, h0, h1;
   };
   Aabb build(const StepContext& ctx, std::size_t i);
+  void resize(std::size_t bodies);
   PairTest test_split(std::uint32_t a, std::uint32_t b) const;
   int m_;
   std::vector<Eigen::Matrix3d> frames_;
+  std::vector<Vec3> framed_velocity_;  // the velocity frames_[i] was built from
+  std::vector<unsigned char> framed_;  // 1: frames_[i] == velocity_frame(framed_velocity_[i])
   std::vector<Ends> ends_;
   std::vector<double> times_;         // per body, its M + 1 sub-interval ends
   std::vector<Trapezoid> scratch_;    // one body's axis-aligned trapezoids

@@ -1,6 +1,7 @@
 #include "run_experiment.hpp"
 
 #include "environment.hpp"
+#include "job_order.hpp"
 #include "../generators/registry.hpp"
 #include "method.hpp"
 #include "progress.hpp"
@@ -193,8 +194,13 @@ json run_experiment(const Experiment& e, const ccd::Scene& scene, const RunOptio
   in.list_missed = e.list_missed;
 
   std::vector<RunRecord> records(jobs.size());
+  // Costliest (smallest dt) first; records[i] stays job i's (experiments/job_order.hpp).
+  std::vector<double> job_dt;
+  for (const Job& j : jobs) job_dt.push_back(j.dt);
+  const std::vector<std::size_t> order = job_order(job_dt);
   progress.start_jobs();
-  ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t i, unsigned) {
+  ccd::parallel_for(jobs.size(), static_cast<unsigned>(std::max(1, options.threads)), [&](std::size_t k, unsigned) {
+    const std::size_t i = order[k];
     if (options.cancel && options.cancel->load()) {
       records[i].cancelled = true;
       return;

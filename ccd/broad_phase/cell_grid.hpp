@@ -61,6 +61,9 @@ inline constexpr double kMaxCellsPerAxis = 0x1p20;
 inline constexpr std::uint64_t kMaxCellsPerLevel = std::uint64_t{1} << 32;
 /// Largest level (cells) scanned with an occupancy bitmap (8 MB) instead of cursors.
 inline constexpr std::uint64_t kMaxOccupancyCells = std::uint64_t{1} << 26;
+/// Smallest level (bytes of its items) whose bitmap scan prefetches the boxes of the next
+/// plane's rows: 1 MiB, about a core's L2 cache (21,845 items).
+inline constexpr std::uint64_t kPrefetchItemBytes = std::uint64_t{1} << 20;
 /// Fewest bodies per thread for a parallel piece of work.
 inline constexpr std::size_t kMinBodiesPerThread = 16384;
 
