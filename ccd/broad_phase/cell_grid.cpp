@@ -53,7 +53,8 @@ void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<st
     });
     std::swap(src, dst);
   }
-  if (src != v) std::copy(src, src + n, v);
+  if (src != v)  // an odd number of passes: copy back, on the same chunks
+    parallel_for(t, t, [&](std::size_t i, unsigned) { std::copy(src + n * i / t, src + n * (i + 1) / t, v + n * i / t); });
 }
 
 inline bool overlap(const CellGrid::Item& a, const CellGrid::Item& b) {
