@@ -1,12 +1,12 @@
-// `grid` with 1 and 2 threads (GridOptions::threads) on the shared moving-spheres scene
+// `grid` with 1, 2, ... threads (GridOptions::threads; --threads, default 1,2) on the shared moving-spheres scene
 // (benchmarks/support/peer_scene.hpp), peers' protocol: frame 0 builds, frames 1-2 warm up,
 // frames 3-22 measured. Not through the registry (whose `grid` is serial).
 // Reported time: median WALL-clock ms per frame (threads only pay off in wall time);
 // counters: cpu_ms = median process CPU ms per frame (all threads; on an idle machine
-// cpu_ms / wall ms ~ the cores in use), pairs/frame. Speedup = wall(1) / wall(2). On a
-// shared machine the second core may be busy: compare with the load average.
+// cpu_ms / wall ms ~ the cores in use), pairs/frame. Speedup = wall(1) / wall(T). On a
+// shared machine the other cores may be busy: compare with the load average.
 //
-//   grid_threads_bench [--sizes=100000,1000000] [benchmark flags]
+//   grid_threads_bench [--sizes=100000,1000000] [--threads=1,2] [benchmark flags]
 #include <ccd/broad_phase/grid.hpp>
 #include <benchmarks/support/peer_scene.hpp>
 #include <benchmarks/support/size_option.hpp>
@@ -71,11 +71,14 @@ void run(benchmark::State& state, std::size_t n, unsigned threads) {
 int main(int argc, char** argv) {
   auto args = ccdlab::bench::take_sizes(argc, argv, {100000, 1000000}, "grid_threads_bench", 100000000, "1e8");
   if (!args) return 2;
+  auto threads = ccdlab::bench::take_threads(std::move(args->rest), {1, 2}, "grid_threads_bench");
+  if (!threads) return 2;
   const std::vector<std::size_t>& sizes = args->sizes;
-  std::vector<char*>& rest = args->rest;
+  std::vector<char*>& rest = threads->rest;
   for (std::size_t n : sizes)
-    for (unsigned t : {1u, 2u})
-      benchmark::RegisterBenchmark(("grid_threads/" + std::to_string(n) + "/" + std::to_string(t)).c_str(), run, n, t)
+    for (std::size_t t : threads->values)
+      benchmark::RegisterBenchmark(("grid_threads/" + std::to_string(n) + "/" + std::to_string(t)).c_str(), run, n,
+                                   static_cast<unsigned>(t))
           ->Iterations(1)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond);

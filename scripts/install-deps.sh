@@ -2,7 +2,7 @@
 # Installs the Debian packages ccdlab needs, only those missing (quick when all are there).
 # Run as root, or as a user with sudo. Extra package names may be passed as arguments.
 set -euo pipefail
-pkgs=(build-essential cmake git libeigen3-dev libboost-dev libgsl-dev catch2 nlohmann-json3-dev libcli11-dev
+pkgs=(build-essential cmake git libeigen3-dev libboost-dev libgsl-dev catch2 nlohmann-json3-dev libcli11-dev libtbb-dev
       libbenchmark-dev libxsimd-dev python3-matplotlib libfcl-dev libbullet-dev libgmp-dev
       python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-hypothesis libjs-three chromium parallel
       python3-pandas python3-tqdm python3-build "$@")

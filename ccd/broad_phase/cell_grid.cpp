@@ -53,7 +53,8 @@ void radix_sort_by_key(std::uint64_t* v, std::size_t n, int bits, std::vector<st
     });
     std::swap(src, dst);
   }
-  if (src != v) std::copy(src, src + n, v);
+  if (src != v)  // an odd number of passes: copy back, on the same chunks
+    parallel_for(t, t, [&](std::size_t i, unsigned) { std::copy(src + n * i / t, src + n * (i + 1) / t, v + n * i / t); });
 }
 
 inline bool overlap(const CellGrid::Item& a, const CellGrid::Item& b) {
@@ -230,23 +231,38 @@ std::uint64_t CellGrid::same_level(const Level& lv, std::vector<BodyPair>& out) 
 }
 
 void CellGrid::build_occupancy(const Level& lv) {
-  occupied_.clear();
-  rank_.clear();
+  bitmap_ = false;
   const std::uint64_t cells = lv.shape.cells();
   const std::uint64_t m = lv.end - lv.begin;
   if (cells > kMaxOccupancyCells || cells > 64 * m + 4096) return;  // too sparse: cursors
+  bitmap_ = true;
   // Padding: stencil keys reach k + nx * ny + nx + 1 beyond the last real key; one more word
   // for the two-word read.
   const std::uint64_t words = (cells + lv.shape.nx * lv.shape.ny + lv.shape.nx + 2) / 64 + 2;
-  occupied_.assign(words, 0);
-  for (std::uint32_t c = lv.cell_begin; c < lv.cell_end; ++c)
-    occupied_[cell_key_[c] >> 6] |= std::uint64_t{1} << (cell_key_[c] & 63);
-  rank_.resize(words);
-  std::uint32_t sum = 0;
-  for (std::uint64_t w = 0; w < words; ++w) {
-    rank_[w] = sum;
-    sum += static_cast<std::uint32_t>(std::popcount(occupied_[w]));
+  if (occupied_.size() < words) occupied_.resize(words), rank_.resize(words);  // every word is written below
+  // Thread i owns the words [word[i], word[i + 1]) and the cells [cell[i], cell[i + 1]) whose
+  // keys fall in them: the word of the key at about i / t of the level's cells. Its ranks
+  // start at its first cell's index, so no thread waits for another, and no word is
+  // written by two threads.
+  const std::uint32_t cb = lv.cell_begin, ce = lv.cell_end;
+  const std::uint32_t* key = cell_key_.data();
+  const unsigned t = threads_for(m, threads_);
+  std::vector<std::uint64_t> word(t + 1);
+  std::vector<std::uint32_t> cell(t + 1);
+  word[0] = 0, word[t] = words, cell[0] = cb, cell[t] = ce;
+  for (unsigned i = 1; i < t; ++i) {
+    word[i] = key[cb + static_cast<std::uint32_t>(std::uint64_t{ce - cb} * i / t)] >> 6;
+    cell[i] = static_cast<std::uint32_t>(std::lower_bound(key + cb, key + ce, word[i] * 64) - key);
   }
+  parallel_for(t, t, [&](std::size_t i, unsigned) {
+    std::fill(occupied_.begin() + word[i], occupied_.begin() + word[i + 1], 0);
+    for (std::uint32_t c = cell[i]; c < cell[i + 1]; ++c) occupied_[key[c] >> 6] |= std::uint64_t{1} << (key[c] & 63);
+    std::uint32_t sum = cell[i] - cb;
+    for (std::uint64_t w = word[i]; w < word[i + 1]; ++w) {
+      rank_[w] = sum;
+      sum += static_cast<std::uint32_t>(std::popcount(occupied_[w]));
+    }
+  });
 }
 
 std::uint64_t CellGrid::same_level_cells(const Level& lv, std::uint32_t c_begin, std::uint32_t c_end,
@@ -273,7 +289,7 @@ std::uint64_t CellGrid::same_level_cells(const Level& lv, std::uint32_t c_begin,
         if (overlap(it[i], it[j])) emit(ids, i, j, out);
       }
   };
-  if (!occupied_.empty()) {
+  if (bitmap_) {
     // Occupancy bitmap: the 3 cells of a stencil row are 3 bits at key t; the index of the
     // first occupied cell at or after t is its rank (occupied keys below t).
     const std::uint64_t* bits = occupied_.data();

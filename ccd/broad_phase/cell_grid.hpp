@@ -32,12 +32,14 @@
 //
 // Threads (set_threads, default 1). With T > 1 threads the keying, the radix sort's
 // passes (per-chunk digit counts, offsets laid out by digit then chunk, per-chunk scatter:
-// the serial result), the gather and the same-level scan split their index or cell ranges
-// into T contiguous pieces of about equal body counts (only while each piece keeps
-// >= kMinBodiesPerThread bodies); each thread writes its own pair buffer and the buffers
-// are appended in range order, so the pairs come out in exactly the serial order whatever
-// T is. The occupancy bitmap and the cross-level merge stay serial. Threads are started per call (ccd/util/parallel_for.hpp): tens of
-// microseconds, which is why small inputs stay serial.
+// the serial result), the gather, the occupancy bitmap (each thread owns the whole words
+// of a range of sorted cells, and its ranks start at its first cell's index) and the
+// same-level scan split their index or cell ranges into T contiguous pieces of about equal
+// body counts (only while each piece keeps >= kMinBodiesPerThread bodies); each thread
+// writes its own pair buffer and the buffers are appended in range order, so the pairs
+// come out in exactly the serial order whatever T is. The cross-level merge stays serial.
+// The threads come from a persistent pool (ccd/util/parallel_for.hpp, about a microsecond
+// a call); the minimum piece keeps the split worth its memory traffic.
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/util/parallel_for.hpp>
 
@@ -120,6 +122,7 @@ class CellGrid {
   std::vector<std::uint32_t> cell_start_;    // first item of each cell, + sentinel
   std::vector<std::uint64_t> occupied_;       // occupancy bitmap of the level being scanned
   std::vector<std::uint32_t> rank_;           // occupied cells before each bitmap word
+  bool bitmap_ = false;                       // whether that level is scanned by the bitmap
   unsigned threads_ = 1;
   struct ThreadBuffers {  // for threads 1.. (thread 0 writes the shared outputs directly)
     std::vector<BodyPair> pairs;

@@ -108,14 +108,19 @@ TEST_CASE("counts do not depend on the thread count, shards merge into the whole
   const TempDir dir;
   const std::string e = dir.write("e.json", small_experiment());
   const std::string one = (dir.path / "one.json").string(), two = (dir.path / "two.json").string();
+  const std::string seven = (dir.path / "seven.json").string();
   REQUIRE(ccdlab("run " + e + " --quiet --threads 1 -o " + one) == 0);
   REQUIRE(ccdlab("run " + e + " --quiet --threads 2 -o " + two) == 0);
-  const json a = read(one), b = read(two);
+  REQUIRE(ccdlab("run " + e + " --quiet --threads 7 -o " + seven) == 0);  // more workers than most cores
+  const json a = read(one), b = read(two), c = read(seven);
   REQUIRE(a["records"].size() == 12);
+  REQUIRE(c["records"].size() == 12);
   const char* counts[] = {"steps", "events", "detected", "missed", "candidates", "bound_candidates",
                           "confirmed", "false_positives", "max_penetration", "mean_lag"};
   for (std::size_t i = 0; i < a["records"].size(); ++i) {
+    CHECK(a["records"][i]["method"] == c["records"][i]["method"]);
     for (const char* k : counts) CHECK(a["records"][i][k] == b["records"][i][k]);
+    for (const char* k : counts) CHECK(a["records"][i][k] == c["records"][i][k]);
     CHECK(a["records"][i]["self_check"]["ok"] == true);
     if (a["records"][i]["continuous"].get<bool>()) CHECK(a["records"][i]["missed"] == 0);
   }

@@ -69,6 +69,10 @@ TEST_CASE("threaded grid reports the serial grid's pairs in the same order", "[b
     check_threads(boxes, 3);
   }
   SECTION("more threads than pieces of 16,384 bodies: capped, same result") { check_threads(gas(40000, 150.0, 5), 16); }
+  SECTION("7 threads (more than most machines' cores), sparse and dense gas") {
+    check_threads(gas(120000, 200.0, 8), 7);  // 120,000 bodies: 7 pieces of >= 16,384
+    check_threads(gas(120000, 60.0, 9), 7);
+  }
   SECTION("equal coordinates: touching unit cubes on a lattice, 4 threads") {
     std::vector<Aabb> boxes;
     for (int i = 0; i < 40; ++i)
