@@ -24,7 +24,7 @@ std::vector<std::string> strings(const std::vector<char*>& v) { return {v.begin(
 
 }  // namespace
 
-TEST_CASE("--sizes and --threads are taken out, the rest kept in order", "[benchmarks]") {
+TEST_CASE("the --sizes and --threads options are taken out, the rest kept in order", "[benchmarks]") {
   Args a({"bench", "--benchmark_filter=x", "--threads=1,2,4,8,16", "--sizes=100,2000", "--other"});
   const auto sizes = ccdlab::bench::take_sizes(static_cast<int>(a.argv.size()), a.argv.data(), {5}, "bench", 1000000, "1e6");
   REQUIRE(sizes);
