@@ -61,20 +61,26 @@ Aabb HornSatBound::build(const StepContext& ctx, std::size_t i) {
     framed_[i] = 1;
   }
   Ends* e = ends_.data() + i * m_;
+  const Eigen::Matrix3d abs_axes = frames_[i].cwiseAbs();
+  Aabb box;
   for (int j = 0; j < m_; ++j) {
     const Trapezoid& z = scratch_[j];
-    e[j].c0 = 0.5 * (z.lo0 + z.hi0);
-    e[j].c1 = 0.5 * (z.lo1 + z.hi1);
+    Ends& ej = e[j];
+    ej.c0 = 0.5 * (z.lo0 + z.hi0);
+    ej.c1 = 0.5 * (z.lo1 + z.hi1);
     // Half-widths; rounding of the midpoint is far below the faces' rounding slack.
-    e[j].h0 = 0.5 * (z.hi0 - z.lo0);
-    e[j].h1 = 0.5 * (z.hi1 - z.lo1);
+    ej.h0 = 0.5 * (z.hi0 - z.lo0);
+    ej.h1 = 0.5 * (z.hi1 - z.lo1);
     if (!folded) {  // a cube: any orientation contains the horn's sphere
-      e[j].h0.setConstant(e[j].h0.maxCoeff());
-      e[j].h1.setConstant(e[j].h1.maxCoeff());
+      ej.h0.setConstant(ej.h0.maxCoeff());
+      ej.h1.setConstant(ej.h1.maxCoeff());
     }
+    const Aabb hull = oriented_hull(abs_axes, ej.c0, ej.c1, ej.h0, ej.h1);  // trapezoid(i, j).hull()
+    if (j == 0)
+      box = hull;
+    else
+      box.merge(hull);
   }
-  Aabb box = trapezoid(static_cast<std::uint32_t>(i), 0).hull();
-  for (int j = 1; j < m_; ++j) box.merge(trapezoid(static_cast<std::uint32_t>(i), j).hull());
   return box;
 }
 

@@ -37,6 +37,11 @@ struct OrientedTrapezoid {
   Aabb hull() const;
 };
 
+/// The world AABB of an oriented trapezoid given |axes| (entrywise) and its ends: the
+/// arithmetic of OrientedTrapezoid::hull, for callers that keep |axes| across trapezoids.
+Aabb oriented_hull(const Eigen::Matrix3d& abs_axes, const Vec3& c0, const Vec3& c1, const Vec3& h0,
+                   const Vec3& h1);
+
 /// The rotation between two frames, computed once per pair of bodies.
 struct SatFrames {
   Eigen::Matrix3d a_axes;

@@ -3,6 +3,7 @@
 #include <bounds/wall_fold.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -66,12 +67,61 @@ PairTest trapezoid_sequence_overlap(const Trapezoid* za, int ma, const Trapezoid
   return PairTest::disjoint();
 }
 
+namespace {
+
+constexpr int kMaxFastPieces = 16;
+
+// horn_trapezoids when no axis of any sub-interval folds: each node's centre band
+// [c - w, c + w] is computed once and shared by the two sub-intervals that meet there (the
+// same operations as the general loop, so the same doubles). False, writing nothing, when
+// some node may pass a wall plane, or for more than kMaxFastPieces sub-intervals.
+bool unfolded_horn(const BodyState& s, double t0, double t1, double A, const std::optional<WallBox>& walls, int m,
+                   double h, double slack, Trapezoid* out) {
+  if (m > kMaxFastPieces) return false;
+  const double r = s.radius;
+  std::array<Vec3, kMaxFastPieces + 1> lo, hi;
+  std::array<double, kMaxFastPieces + 1> time;
+  lo[0] = s.position.array() - slack;
+  hi[0] = s.position.array() + slack;
+  time[0] = t0;
+  for (int j = 1; j <= m; ++j) {
+    const double s_j = j == m ? h : h * j / m;
+    const Vec3 c = s.position + s.velocity * s_j;
+    const double w = 0.5 * A * s_j * s_j + slack;
+    lo[j] = c.array() - w;
+    hi[j] = c.array() + w;
+    time[j] = j == m ? t1 : t0 + s_j;
+  }
+  if (walls) {
+    for (int k = 0; k < 3; ++k) {
+      const double L = walls->min[k] + r;
+      const double H = walls->max[k] - r;
+      if (!(L <= H)) continue;  // never folds (as in the general loop)
+      for (int j = 0; j <= m; ++j)
+        if (!(lo[j][k] >= L && hi[j][k] <= H)) return false;
+    }
+  }
+  for (int j = 0; j < m; ++j) {
+    Trapezoid& z = out[j];
+    z.t0 = time[j];
+    z.t1 = time[j + 1];
+    z.lo0 = lo[j].array() - r;
+    z.hi0 = hi[j].array() + r;
+    z.lo1 = lo[j + 1].array() - r;
+    z.hi1 = hi[j + 1].array() + r;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool horn_trapezoids(const BodyState& s, double t0, double t1, double A, const std::optional<WallBox>& walls,
                      int m, Trapezoid* out) {
   const double h = t1 - t0;
   const double r = s.radius;
   const double magnitude = s.position.cwiseAbs().maxCoeff() + r + s.velocity.cwiseAbs().maxCoeff() * h + A * h * h;
   const double slack = rounding_slack(magnitude);
+  if (unfolded_horn(s, t0, t1, A, walls, m, h, slack, out)) return false;
   bool folded = false;
   // Node j: time t0 + h j / m, free centre p + v s_j, centre half-width A s_j^2 / 2.
   double s_prev = 0.0;

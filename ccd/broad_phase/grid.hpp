@@ -1,6 +1,7 @@
 #pragma once
-// `grid`: uniform grid rebuilt every frame by sorting (cell key, body). Exact: candidate
-// pairs get the closed-interval box test, so it reports the same pairs as `brute`.
+// `grid`: uniform grid built by sorting (cell key, body) at every frame its Verlet list
+// (below) cannot serve. Exact: candidate pairs get the closed-interval box test, so it
+// reports the same pairs as `brute`.
 //
 // Cell-size rule: s = max(largest box extent over all axes and bodies, options.cell_size)
 // times (1 + 2^-20), raised if needed so that there are at most 2^20 cells per axis and
@@ -14,6 +15,11 @@
 // boxes crowd into cells sized for the largest): use `hgrid` then.
 // Boxes must be finite with lo <= hi; N = 0 or 1 gives no pairs.
 //
+// Frames in between (`reuse`, default 16): the pairs are found on boxes grown by about
+// `reuse` frames of each body's motion and serve every following frame whose boxes all
+// lie inside the grown ones, each listed pair box-tested (ccd/broad_phase/verlet_list.hpp;
+// exact, the same pairs as a rebuild). stats().rebuilt tells the frames that rebuilt.
+//
 // Incremental update (update(), for the earliest scheduler): a batch of fewer than a
 // quarter of the bodies moves only those bodies in a hashed grid kept between calls
 // (ccd/broad_phase/cell_hash.hpp; cell size twice the mean largest box extent, chosen when
@@ -24,6 +30,7 @@
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/cell_grid.hpp>
 #include <ccd/broad_phase/cell_hash.hpp>
+#include <ccd/broad_phase/verlet_list.hpp>
 
 namespace ccd {
 
@@ -38,11 +45,14 @@ struct GridOptions {
   /// pair buffer, appended in range order: the pairs, and their order, are those of T = 1.
   static constexpr unsigned kThreads = 1;
   unsigned threads = kThreads;
+  /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
+  static constexpr unsigned kReuse = 16;
+  unsigned reuse = kReuse;
 };
 
 class UniformGrid final : public BroadPhase {
  public:
-  explicit UniformGrid(GridOptions options = {}) : options_(options) {}
+  explicit UniformGrid(GridOptions options = {}) : options_(options), verlet_(options.reuse) {}
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) override;
   void update(std::span<const Aabb> boxes, std::span<const std::uint32_t> moved, std::vector<BodyPair>& out) override;
   BroadPhaseStats stats() const override { return stats_; }
@@ -50,12 +60,14 @@ class UniformGrid final : public BroadPhase {
   double cell_size() const { return cell_; }
 
  private:
-  void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // find_pairs' pass
+  void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // one rebuild's pass
 
   GridOptions options_;
   double cell_ = 0.0;
   detail::CellGrid cells_;
   BroadPhaseStats stats_;
+  detail::VerletList verlet_;
+  std::vector<BodyPair> found_;  // a rebuild's pairs on the grown boxes
   detail::CellHash hash_;      // the incremental update's grid
   bool hash_current_ = false;  // hash_ lists the boxes of the last call
   std::vector<std::uint32_t> seen_;   // per body: the last query that visited it

@@ -1,7 +1,7 @@
 #pragma once
 // `hgrid`: hierarchical grid (Mirtich 1996; Ericson, Real-Time Collision Detection 7.2),
-// rebuilt every frame. Exact: candidates get the closed-interval box test, so it reports
-// the same pairs as `brute`.
+// rebuilt at every frame its Verlet list cannot serve. Exact: candidates get the
+// closed-interval box test, so it reports the same pairs as `brute`.
 //
 // Levels: cell sizes s_h = s_top / 2^h, h = 0 (coarsest) .. h_max, where s_top is the
 // `grid` rule (largest extent times 1 + 2^-20) and h_max the finest level that keeps at
@@ -12,21 +12,35 @@
 // ccd/broad_phase/cell_grid.hpp). Per frame O(n * non-empty levels + candidates); sizes
 // spanning many orders of magnitude cost one extra level each, where `grid` puts every
 // small box into cells sized for the largest. Boxes must be finite with lo <= hi.
+// Frames in between (`reuse`, default 16): a pair list found on grown boxes serves them,
+// as in `grid` (ccd/broad_phase/verlet_list.hpp).
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/cell_grid.hpp>
+#include <ccd/broad_phase/verlet_list.hpp>
 
 #include <cstdint>
 
 namespace ccd {
 
+struct HgridOptions {
+  /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
+  static constexpr unsigned kReuse = 16;
+  unsigned reuse = kReuse;
+};
+
 class HierarchicalGrid final : public BroadPhase {
  public:
+  explicit HierarchicalGrid(HgridOptions options = {}) : verlet_(options.reuse) {}
   void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) override;
   BroadPhaseStats stats() const override { return stats_; }
   /// Non-empty levels in the last call.
   std::size_t levels() const { return cell_.size(); }
 
  private:
+  void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // one rebuild's pass
+
+  detail::VerletList verlet_;
+  std::vector<BodyPair> found_;  // a rebuild's pairs on the grown boxes
   std::vector<double> extent_;
   std::vector<std::uint8_t> halvings_;  // per body: h, then its engine level
   std::vector<double> cell_;            // non-empty levels, finest first

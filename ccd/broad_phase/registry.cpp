@@ -27,12 +27,26 @@ constexpr ParameterSpec kGridParameters[] = {
      ParameterKind::Real, {0.0, 1e12}, "scene length"},
     {"threads", double(GridOptions::kThreads), "threads for one find_pairs call (same pairs, same order)",
      ParameterKind::Integer, {1.0, 256.0}, "threads"},
+    {"reuse", double(GridOptions::kReuse),
+     "frames one pair list, found on boxes grown by that much motion, serves while every box stays inside its grown box "
+     "(exact; 0 = rebuild every frame)",
+     ParameterKind::Integer, {0.0, 1024.0}, "frames"},
 };
 std::unique_ptr<BroadPhase> make_grid(const ParameterSet& p) {
   GridOptions o;
   o.cell_size = p.number("cell");
   o.threads = static_cast<unsigned>(p.integer("threads"));
+  o.reuse = static_cast<unsigned>(p.integer("reuse"));
   return std::make_unique<UniformGrid>(o);
+}
+
+constexpr ParameterSpec kHgridParameters[] = {
+    {"reuse", double(HgridOptions::kReuse), "as grid's reuse", ParameterKind::Integer, {0.0, 1024.0}, "frames"},
+};
+std::unique_ptr<BroadPhase> make_hgrid(const ParameterSet& p) {
+  HgridOptions o;
+  o.reuse = static_cast<unsigned>(p.integer("reuse"));
+  return std::make_unique<HierarchicalGrid>(o);
 }
 
 constexpr ParameterSpec kSapParameters[] = {
@@ -64,8 +78,7 @@ constexpr BroadPhaseInfo kBroadPhases[] = {
     {"sweep", "sort and sweep: coherent insertion sort of starts, re-swept every frame", kSweepParameters,
      &make_sweep},
     {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil", kGridParameters, &make_grid},
-    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", {},
-     &make_plain<HierarchicalGrid>},
+    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", kHgridParameters, &make_hgrid},
     {"rtree", "Boost.Geometry R-tree (quadratic, 16), bulk-loaded per frame: library baseline", {},
      &make_plain<BoostRtree>},
 };

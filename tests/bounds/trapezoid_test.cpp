@@ -1,9 +1,11 @@
+#include <bounds/rounding.hpp>
 #include <bounds/trapezoid.hpp>
 #include <bounds/wall_fold.hpp>
 #include <tests/bounds/bound_test_support.hpp>
 
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <optional>
 #include <random>
 
 namespace bounds_trapezoid_test {
@@ -164,6 +166,72 @@ TEST_CASE("horn trapezoids contain bounded-acceleration motions", "[bounds][trap
     }
   }
   CHECK(failed == 0);
+}
+
+TEST_CASE("horn trapezoids are the per-sub-interval formula, bit for bit, folded or not", "[bounds][trapezoid]") {
+  // Node j of M at s_j = h j / M (s_M = h): centre p + v s_j, half-width A s_j^2 / 2 plus the
+  // rounding slack, faces widened by r. Dyadic inputs keep every product exact, so the
+  // reference is the same doubles however the compiler contracts it. Covers the shared-node
+  // path (no fold, M <= 16) and the per-piece loop (M = 17; a fold elsewhere in the call):
+  // every unfolded axis of every sub-interval must match.
+  struct Case {
+    Vec3 p, v;
+    double r, A, t0, h;
+    bool walls;
+  };
+  const double far = 0x1p40;
+  const std::vector<Case> cases = {
+      {Vec3(1, 2, 3), Vec3(0.5, -0.25, 2), 0.5, 0.0, 0.0, 17.0 / 64, false},
+      {Vec3(1, 2, 3), Vec3(0.5, -0.25, 2), 0.5, 4.0, 0.25, 17.0 / 64, true},        // walls far
+      {Vec3(far, -far, 1), Vec3(1024, 0, -8), 2.0, 1.0, 1024.0, 17.0 / 64, false},  // far from the origin
+      {Vec3(14.5, 2, 3), Vec3(8, 0, 0), 0.5, 0.0, 0.0, 17.0 / 64, true},  // reaches x = 15: the last pieces fold
+      {Vec3(0.5, 2, 3), Vec3(0, 0, 0), 0.5, 0.0, 0.0, 17.0 / 64, true},   // at rest, tangent to the x = 0 wall
+  };
+  ccd::WallBox box;
+  box.min = Vec3(0, 0, 0);
+  box.max = Vec3(15.5, 16, 16);
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const Case& k = cases[c];
+    ccd::BodyState s;
+    s.position = k.p;
+    s.velocity = k.v;
+    s.radius = k.r;
+    const std::optional<ccd::WallBox> walls = k.walls ? std::optional<ccd::WallBox>(box) : std::nullopt;
+    for (const int m : {1, 4, 16, 17}) {
+      INFO("case " << c << " M " << m);
+      const double h = m == 17 ? k.h : 0.25;  // h j / 17 = j / 64 exactly; h j / M dyadic otherwise
+      const double t1 = k.t0 + h;
+      std::vector<Trapezoid> z(m);
+      const bool folded = ccd::horn_trapezoids(s, k.t0, t1, k.A, walls, m, z.data());
+      const double magnitude = k.p.cwiseAbs().maxCoeff() + k.r + k.v.cwiseAbs().maxCoeff() * h + k.A * h * h;
+      const double slack = ccd::rounding_slack(magnitude);
+      int unfolded_axes = 0;
+      for (int j = 0; j < m; ++j) {
+        const double sa = j == 0 ? 0.0 : h * j / m, sb = j + 1 == m ? h : h * (j + 1) / m;
+        REQUIRE(z[j].t0 == k.t0 + sa);
+        REQUIRE(z[j].t1 == (j + 1 == m ? t1 : k.t0 + sb));
+        const double wa = 0.5 * k.A * sa * sa + slack, wb = 0.5 * k.A * sb * sb + slack;
+        for (int a = 0; a < 3; ++a) {
+          const double ca = k.p[a] + k.v[a] * sa, cb = k.p[a] + k.v[a] * sb;
+          const double L = box.min[a] + k.r, H = box.max[a] - k.r;
+          const bool folds = walls && (std::min(ca - wa, cb - wb) < L || std::max(ca + wa, cb + wb) > H);
+          if (folds) {
+            REQUIRE(folded);
+            REQUIRE(z[j].lo0[a] == z[j].lo1[a]);  // a folded face does not move
+            continue;
+          }
+          ++unfolded_axes;
+          CHECK(z[j].lo0[a] == (ca - wa) - k.r);
+          CHECK(z[j].hi0[a] == (ca + wa) + k.r);
+          CHECK(z[j].lo1[a] == (cb - wb) - k.r);
+          CHECK(z[j].hi1[a] == (cb + wb) + k.r);
+        }
+      }
+      REQUIRE(unfolded_axes > 0);
+      if (c == 3) REQUIRE(folded);
+      if (c != 3 && c != 4) REQUIRE_FALSE(folded);
+    }
+  }
 }
 
 TEST_CASE("trapezoid_sequence_overlap splits at the union of both bodies' breakpoints", "[bounds][trapezoid][windows]") {

@@ -1,0 +1,89 @@
+#include <ccd/broad_phase/verlet_list.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ccd::detail {
+namespace {
+
+constexpr std::uint32_t kMaxBackoff = 64;
+
+bool inside(const Aabb& box, const Aabb& fat) {
+  return (box.lo.x() >= fat.lo.x()) & (box.lo.y() >= fat.lo.y()) & (box.lo.z() >= fat.lo.z()) &
+         (box.hi.x() <= fat.hi.x()) & (box.hi.y() <= fat.hi.y()) & (box.hi.z() <= fat.hi.z());
+}
+
+double largest_extent(const Aabb& b) { return (b.hi - b.lo).maxCoeff(); }
+
+// The largest change of any face between two boxes.
+double face_motion(const Aabb& now, const Aabb& then) {
+  return std::max((now.lo - then.lo).cwiseAbs().maxCoeff(), (now.hi - then.hi).cwiseAbs().maxCoeff());
+}
+
+}  // namespace
+
+bool VerletList::serve(std::span<const Aabb> boxes, std::vector<BodyPair>& out, std::uint64_t& box_tests) {
+  const std::size_t n = boxes.size();
+  if (anchor_.size() == n && anchor_frames_ < UINT32_MAX) ++anchor_frames_;
+  if (!listed_ || fat_.size() != n) return false;
+  bool all_inside = true;
+  for (std::size_t i = 0; i < n; ++i) all_inside &= inside(boxes[i], fat_[i]);
+  if (!all_inside) {
+    listed_ = false;
+    if (served_ == 0) {  // out at once: margins do not pay at this motion per frame
+      backoff_ = next_backoff_;
+      next_backoff_ = std::min(2 * next_backoff_, kMaxBackoff);
+    }
+    return false;
+  }
+  ++served_;
+  next_backoff_ = 1;
+  out.clear();
+  for (const BodyPair& p : list_)
+    if (boxes[p.a].overlaps(boxes[p.b])) out.push_back(p);
+  box_tests = list_.size();
+  return true;
+}
+
+std::span<const Aabb> VerletList::fat_boxes(std::span<const Aabb> boxes) {
+  const std::size_t n = boxes.size();
+  fattened_ = false;
+  if (reuse_ == 0) return boxes;
+  const bool anchored = anchor_.size() == n && anchor_frames_ > 0;
+  if (backoff_ > 0) {
+    --backoff_;
+  } else {
+    fat_.resize(n);
+    const double per_frame = anchored ? static_cast<double>(reuse_) / anchor_frames_ : 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Aabb& b = boxes[i];
+      const double extent = largest_extent(b);
+      double m = anchored ? std::min(per_frame * face_motion(b, anchor_[i]), 0.25 * extent) : extent / 64.0;
+      if (!(m >= 0.0) || !std::isfinite(m)) m = 0.0;
+      Aabb f{b.lo.array() - m, b.hi.array() + m};
+      if (!f.lo.allFinite() || !f.hi.allFinite()) f = b;
+      fat_[i] = f;
+    }
+    fattened_ = true;
+  }
+  anchor_.assign(boxes.begin(), boxes.end());
+  anchor_frames_ = 0;
+  return fattened_ ? std::span<const Aabb>(fat_) : boxes;
+}
+
+std::uint64_t VerletList::adopt(std::span<const Aabb> boxes, std::vector<BodyPair>& found, std::vector<BodyPair>& out) {
+  if (!fattened_) {
+    out.swap(found);
+    listed_ = false;
+    return 0;
+  }
+  list_.swap(found);
+  listed_ = true;
+  served_ = 0;
+  out.clear();
+  for (const BodyPair& p : list_)
+    if (boxes[p.a].overlaps(boxes[p.b])) out.push_back(p);
+  return list_.size();
+}
+
+}  // namespace ccd::detail
