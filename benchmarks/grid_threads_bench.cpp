@@ -1,6 +1,7 @@
 // `grid` with 1, 2, ... threads (GridOptions::threads; --threads, default 1,2) on the shared moving-spheres scene
 // (benchmarks/support/peer_scene.hpp), peers' protocol: frame 0 builds, frames 1-2 warm up,
-// frames 3-22 measured. Not through the registry (whose `grid` is serial).
+// frames 3-22 measured. Not through the registry (whose `grid` is serial). Every frame is a
+// rebuild (reuse = 0: no Verlet list), since the rebuild is what the threads split.
 // Reported time: median WALL-clock ms per frame (threads only pay off in wall time);
 // counters: cpu_ms = median process CPU ms per frame (all threads; on an idle machine
 // cpu_ms / wall ms ~ the cores in use), pairs/frame. Speedup = wall(1) / wall(T). On a
@@ -38,7 +39,7 @@ double median(std::vector<double> v) {
 void run(benchmark::State& state, std::size_t n, unsigned threads) {
   for (auto _ : state) {
     ccdlab::bench::PeerScene scene(n, 1);
-    ccd::UniformGrid grid(ccd::GridOptions{.threads = threads});
+    ccd::UniformGrid grid(ccd::GridOptions{.threads = threads, .reuse = 0});
     std::vector<ccd::Aabb> boxes;
     std::vector<ccd::BodyPair> pairs;
     scene.boxes(boxes);

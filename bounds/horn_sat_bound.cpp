@@ -62,7 +62,8 @@ Aabb HornSatBound::build(const StepContext& ctx, std::size_t i) {
   }
   Ends* e = ends_.data() + i * m_;
   const Eigen::Matrix3d abs_axes = frames_[i].cwiseAbs();
-  Aabb box;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo = Vec3::Constant(inf), hi = Vec3::Constant(-inf);  // the hull of trapezoid(i, j).hull()
   for (int j = 0; j < m_; ++j) {
     const Trapezoid& z = scratch_[j];
     Ends& ej = e[j];
@@ -75,13 +76,9 @@ Aabb HornSatBound::build(const StepContext& ctx, std::size_t i) {
       ej.h0.setConstant(ej.h0.maxCoeff());
       ej.h1.setConstant(ej.h1.maxCoeff());
     }
-    const Aabb hull = oriented_hull(abs_axes, ej.c0, ej.c1, ej.h0, ej.h1);  // trapezoid(i, j).hull()
-    if (j == 0)
-      box = hull;
-    else
-      box.merge(hull);
+    merge_oriented_hull(abs_axes, ej.c0, ej.c1, ej.h0, ej.h1, lo, hi);
   }
-  return box;
+  return {lo, hi};
 }
 
 void HornSatBound::resize(std::size_t n) {

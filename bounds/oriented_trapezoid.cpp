@@ -7,15 +7,12 @@
 
 namespace ccd {
 
-Aabb oriented_hull(const Eigen::Matrix3d& abs_axes, const Vec3& c0, const Vec3& c1, const Vec3& h0,
-                   const Vec3& h1) {
-  // Half-extent of a box along world axis k: sum_i h_i |axes(k, i)|.
-  const Vec3 e0 = abs_axes * h0;
-  const Vec3 e1 = abs_axes * h1;
-  return {(c0 - e0).cwiseMin(c1 - e1), (c0 + e0).cwiseMax(c1 + e1)};
+Aabb OrientedTrapezoid::hull() const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo = Vec3::Constant(inf), hi = Vec3::Constant(-inf);
+  merge_oriented_hull(axes.cwiseAbs(), c0, c1, h0, h1, lo, hi);
+  return {lo, hi};
 }
-
-Aabb OrientedTrapezoid::hull() const { return oriented_hull(axes.cwiseAbs(), c0, c1, h0, h1); }
 
 SatFrames::SatFrames(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
     : a_axes(a), b_axes(b), r(a.transpose() * b) {

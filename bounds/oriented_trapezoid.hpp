@@ -37,10 +37,18 @@ struct OrientedTrapezoid {
   Aabb hull() const;
 };
 
-/// The world AABB of an oriented trapezoid given |axes| (entrywise) and its ends: the
-/// arithmetic of OrientedTrapezoid::hull, for callers that keep |axes| across trapezoids.
-Aabb oriented_hull(const Eigen::Matrix3d& abs_axes, const Vec3& c0, const Vec3& c1, const Vec3& h0,
-                   const Vec3& h1);
+/// The world AABB of an oriented trapezoid given |axes| (entrywise) and its ends, merged
+/// into [lo, hi] (start them at +inf / -inf for the hull alone): the arithmetic of
+/// OrientedTrapezoid::hull, for callers that keep |axes| across trapezoids. Inline, so that a
+/// caller's running hull stays in registers.
+inline void merge_oriented_hull(const Eigen::Matrix3d& abs_axes, const Vec3& c0, const Vec3& c1, const Vec3& h0,
+                                const Vec3& h1, Vec3& lo, Vec3& hi) {
+  // Half-extent of a box along world axis k: sum_i h_i |axes(k, i)|.
+  const Vec3 e0 = abs_axes * h0;
+  const Vec3 e1 = abs_axes * h1;
+  lo = lo.cwiseMin((c0 - e0).cwiseMin(c1 - e1));
+  hi = hi.cwiseMax((c0 + e0).cwiseMax(c1 + e1));
+}
 
 /// The rotation between two frames, computed once per pair of bodies.
 struct SatFrames {

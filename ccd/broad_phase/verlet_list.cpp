@@ -25,9 +25,9 @@ double face_motion(const Aabb& now, const Aabb& then) {
 bool VerletList::serve(std::span<const Aabb> boxes, std::vector<BodyPair>& out, std::uint64_t& box_tests) {
   const std::size_t n = boxes.size();
   if (anchor_.size() == n && anchor_frames_ < UINT32_MAX) ++anchor_frames_;
-  if (!listed_ || fat_.size() != n) return false;
-  bool all_inside = true;
-  for (std::size_t i = 0; i < n; ++i) all_inside &= inside(boxes[i], fat_[i]);
+  if (!listed_) return false;
+  bool all_inside = fat_.size() == n;  // a new body count (e.g. periodic images) cannot be served
+  for (std::size_t i = 0; all_inside && i < n; ++i) all_inside &= inside(boxes[i], fat_[i]);
   if (!all_inside) {
     listed_ = false;
     if (served_ == 0) {  // out at once: margins do not pay at this motion per frame
