@@ -41,7 +41,10 @@ std::unique_ptr<BroadPhase> make_grid(const ParameterSet& p) {
 }
 
 constexpr ParameterSpec kHgridParameters[] = {
-    {"reuse", double(HgridOptions::kReuse), "as grid's reuse", ParameterKind::Integer, {0.0, 1024.0}, "frames"},
+    {"reuse", double(HgridOptions::kReuse),
+     "frames one pair list, found on grown boxes, serves while every box stays inside its grown box (exact; 0 = "
+     "rebuild every frame)",
+     ParameterKind::Integer, {0.0, 1024.0}, "frames"},
 };
 std::unique_ptr<BroadPhase> make_hgrid(const ParameterSet& p) {
   HgridOptions o;
@@ -77,8 +80,10 @@ constexpr BroadPhaseInfo kBroadPhases[] = {
      kSapParameters, &make_sap},
     {"sweep", "sort and sweep: coherent insertion sort of starts, re-swept every frame", kSweepParameters,
      &make_sweep},
-    {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil", kGridParameters, &make_grid},
-    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson)", kHgridParameters, &make_hgrid},
+    {"grid", "uniform grid, cell = largest extent, radix-sorted cells, half stencil; a Verlet list between rebuilds",
+     kGridParameters, &make_grid},
+    {"hgrid", "hierarchical grid, cell sizes doubling per level (Mirtich, Ericson); a Verlet list between rebuilds",
+     kHgridParameters, &make_hgrid},
     {"rtree", "Boost.Geometry R-tree (quadratic, 16), bulk-loaded per frame: library baseline", {},
      &make_plain<BoostRtree>},
 };

@@ -51,7 +51,12 @@ std::span<const Aabb> VerletList::fat_boxes(std::span<const Aabb> boxes) {
   if (reuse_ == 0) return boxes;
   const bool anchored = anchor_.size() == n && anchor_frames_ > 0;
   if (backoff_ > 0) {
-    --backoff_;
+    // Plain boxes. Anchors only for the frame before the next grown build, which measures
+    // one frame of motion from them (no copy of every box on every plain frame).
+    if (--backoff_ > 0) {
+      anchor_.clear();
+      return boxes;
+    }
   } else {
     fat_.resize(n);
     const double per_frame = anchored ? static_cast<double>(reuse_) / anchor_frames_ : 0.0;
