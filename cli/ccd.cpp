@@ -18,6 +18,7 @@
 #include <ccd/util/integer_text.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -198,7 +199,8 @@ int run_ccd(std::span<const std::string> args) {
     std::vector<int> results(n);
     std::vector<double> seconds(n);
     std::size_t false_negatives = 0, false_positives = 0, positives = 0, degenerate = 0, decided_exactly = 0;
-    std::size_t reasons[5] = {0, 0, 0, 0, 0};  // by HitReason
+    // By HitReason (Budget is its last value).
+    std::array<std::size_t, static_cast<std::size_t>(ccd::cloth::HitReason::Budget) + 1> reasons{};
     for (std::size_t i = 0; i < n; ++i) {
       bool hit = false;
       const auto start = std::chrono::steady_clock::now();
@@ -207,7 +209,7 @@ int run_ccd(std::span<const std::string> args) {
       } else {
         const auto r = ccd::cloth::triangle_ccd(kind, file.queries[i], options);
         hit = r.status != ccd::QueryStatus::Miss;  // Degenerate counts as a possible contact
-        ++reasons[static_cast<int>(r.reason)];
+        ++reasons.at(static_cast<std::size_t>(r.reason));
         decided_exactly += r.decided_exactly;
         degenerate += r.status == ccd::QueryStatus::Degenerate;
       }
@@ -229,7 +231,7 @@ int run_ccd(std::span<const std::string> args) {
               << "time per query: median " << micros(median) << ", p99.9 " << micros(p999) << ", max " << micros(worst)
               << "\n";
     using ccd::cloth::HitReason;
-    const auto count = [&](HitReason r) { return reasons[static_cast<int>(r)]; };
+    const auto count = [&](HitReason r) { return reasons.at(static_cast<std::size_t>(r)); };
     if (!exact)
       std::cout << "contacts reported: " << count(HitReason::Proved) << " proved, " << count(HitReason::Exact)
                 << " decided exactly, " << count(HitReason::Tolerance) << " tolerance stops, "

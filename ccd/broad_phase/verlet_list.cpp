@@ -30,10 +30,7 @@ bool VerletList::serve(std::span<const Aabb> boxes, std::vector<BodyPair>& out, 
   for (std::size_t i = 0; all_inside && i < n; ++i) all_inside &= inside(boxes[i], fat_[i]);
   if (!all_inside) {
     listed_ = false;
-    if (served_ == 0) {  // out at once: margins do not pay at this motion per frame
-      backoff_ = next_backoff_;
-      next_backoff_ = std::min(2 * next_backoff_, kMaxBackoff);
-    }
+    if (served_ == 0) back_off();  // out at once: margins do not pay at this motion per frame
     return false;
   }
   ++served_;
@@ -59,21 +56,32 @@ std::span<const Aabb> VerletList::fat_boxes(std::span<const Aabb> boxes) {
     }
   } else {
     fat_.resize(n);
-    const double per_frame = anchored ? static_cast<double>(reuse_) / anchor_frames_ : 0.0;
+    const double frames = anchored ? static_cast<double>(anchor_frames_) : 1.0;
+    bool short_lived = false;  // some body would leave its grown box within two frames
     for (std::size_t i = 0; i < n; ++i) {
       const Aabb& b = boxes[i];
       const double extent = largest_extent(b);
-      double m = anchored ? std::min(per_frame * face_motion(b, anchor_[i]), 0.25 * extent) : extent / 64.0;
+      const double per_frame = anchored ? face_motion(b, anchor_[i]) / frames : 0.0;
+      double m = anchored ? std::min(reuse_ * per_frame, 0.25 * extent) : extent / 64.0;
       if (!(m >= 0.0) || !std::isfinite(m)) m = 0.0;
+      short_lived |= m < 2.0 * per_frame;
       Aabb f{b.lo.array() - m, b.hi.array() + m};
       if (!f.lo.allFinite() || !f.hi.allFinite()) f = b;
       fat_[i] = f;
     }
-    fattened_ = true;
+    if (short_lived)
+      back_off();
+    else
+      fattened_ = true;
   }
   anchor_.assign(boxes.begin(), boxes.end());
   anchor_frames_ = 0;
   return fattened_ ? std::span<const Aabb>(fat_) : boxes;
+}
+
+void VerletList::back_off() {
+  backoff_ = next_backoff_;
+  next_backoff_ = std::min(2 * next_backoff_, kMaxBackoff);
 }
 
 std::uint64_t VerletList::adopt(std::span<const Aabb> boxes, std::vector<BodyPair>& found, std::vector<BodyPair>& out) {

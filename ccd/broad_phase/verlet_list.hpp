@@ -15,10 +15,11 @@
 // stays inside for about `reuse` frames. On the first build (and after a change of body
 // count) the margin is 1/64 of the extent. A body at rest gets margin 0 and stays inside
 // until it moves.
-// Backing off. When the first frame after a rebuild already finds a box outside, margins
-// do not pay (the motion per frame is a large part of a box): the next rebuilds use plain
-// boxes and skip the containment check, for 1, 2, 4, ... 64 frames, doubling while the
-// list keeps failing at once, back to 1 when it serves a frame.
+// Backing off. When the first frame after a rebuild already finds a box outside, or when
+// some body's margin would not last two frames of its motion (the cap binds: the motion
+// per frame is a large part of its box), margins do not pay: that rebuild and the next use
+// plain boxes and skip the containment check, for 1, 2, 4, ... 64 frames, doubling while
+// this repeats, back to 1 when a list serves a frame.
 // Cost per served frame: one containment test per body and one box test per listed pair.
 #include <ccd/broad_phase/broad_phase.hpp>
 
@@ -49,6 +50,8 @@ class VerletList {
   void clear() { listed_ = false; }
 
  private:
+  void back_off();  // plain rebuilds for the next backoff period, doubling it
+
   unsigned reuse_;
   bool listed_ = false;   // list_ and fat_ describe the current body set
   bool fattened_ = false;  // the last fat_boxes() grew the boxes
