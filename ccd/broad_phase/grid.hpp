@@ -15,7 +15,7 @@
 // boxes crowd into cells sized for the largest): use `hgrid` then.
 // Boxes must be finite with lo <= hi; N = 0 or 1 gives no pairs.
 //
-// Frames in between (`reuse`, default 16): the pairs are found on boxes grown by about
+// Frames in between (`reuse`, default 32): the pairs are found on boxes grown by about
 // `reuse` frames of each body's motion and serve every following frame whose boxes all
 // lie inside the grown ones, each listed pair box-tested (ccd/broad_phase/verlet_list.hpp;
 // exact, the same pairs as a rebuild). stats().rebuilt tells the frames that rebuilt.
@@ -46,7 +46,7 @@ struct GridOptions {
   static constexpr unsigned kThreads = 1;
   unsigned threads = kThreads;
   /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
-  static constexpr unsigned kReuse = 16;
+  static constexpr unsigned kReuse = 32;
   unsigned reuse = kReuse;
 };
 

@@ -12,7 +12,7 @@
 // ccd/broad_phase/cell_grid.hpp). Per frame O(n * non-empty levels + candidates); sizes
 // spanning many orders of magnitude cost one extra level each, where `grid` puts every
 // small box into cells sized for the largest. Boxes must be finite with lo <= hi.
-// Frames in between (`reuse`, default 16): a pair list found on grown boxes serves them,
+// Frames in between (`reuse`, default 32): a pair list found on grown boxes serves them,
 // as in `grid` (ccd/broad_phase/verlet_list.hpp).
 #include <ccd/broad_phase/broad_phase.hpp>
 #include <ccd/broad_phase/cell_grid.hpp>
@@ -24,7 +24,7 @@ namespace ccd {
 
 struct HgridOptions {
   /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
-  static constexpr unsigned kReuse = 16;
+  static constexpr unsigned kReuse = 32;
   unsigned reuse = kReuse;
 };
 

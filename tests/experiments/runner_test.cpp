@@ -121,9 +121,9 @@ TEST_CASE("a record stores the options it ran with and the broad phase's counter
   const ccdlab::RunRecord plain = f.run("horn:2/grid", 0.25);
   const ccdlab::RunRecord set = f.run("horn:pieces=3/grid:cell=3,threads=2", 0.25);
   CHECK(plain.options == nlohmann::json{{"bound", {{"pieces", 2}}},
-                                        {"broad_phase", {{"cell", 0.0}, {"reuse", 16}, {"threads", 1}}}});
+                                        {"broad_phase", {{"cell", 0.0}, {"reuse", 32}, {"threads", 1}}}});
   CHECK(set.options == nlohmann::json{{"bound", {{"pieces", 3}}},
-                                      {"broad_phase", {{"cell", 3.0}, {"reuse", 16}, {"threads", 2}}}});
+                                      {"broad_phase", {{"cell", 3.0}, {"reuse", 32}, {"threads", 2}}}});
   // The grid is exact whatever its cell: the same pairs, the same detection.
   CHECK(set.bodies.candidates == plain.bodies.candidates);
   CHECK(set.bodies.detected == plain.bodies.detected);

@@ -104,7 +104,7 @@ TEST_CASE("broad-phase options are a table with units and defaults, settable by 
   }
   SECTION("grid:cell=2.5,threads=2") {
     const ccd::BroadPhaseSpec spec = ccd::parse_broad_phase("grid:cell=2.5,threads=2");
-    CHECK(spec.options.to_json() == nlohmann::json{{"cell", 2.5}, {"reuse", 16}, {"threads", 2}});
+    CHECK(spec.options.to_json() == nlohmann::json{{"cell", 2.5}, {"reuse", 32}, {"threads", 2}});
     // Unit boxes: the largest extent is 1, so the cell is the option's 2.5 (times 1 + 2^-20).
     auto grid = spec.make();
     std::vector<BodyPair> pairs;
@@ -114,8 +114,8 @@ TEST_CASE("broad-phase options are a table with units and defaults, settable by 
   }
   SECTION("the defaults") {
     CHECK(ccd::parse_broad_phase("grid").options.to_json() ==
-          nlohmann::json{{"cell", 0.0}, {"reuse", 16}, {"threads", 1}});
-    CHECK(ccd::parse_broad_phase("hgrid").options.to_json() == nlohmann::json{{"reuse", 16}});
+          nlohmann::json{{"cell", 0.0}, {"reuse", 32}, {"threads", 1}});
+    CHECK(ccd::parse_broad_phase("hgrid").options.to_json() == nlohmann::json{{"reuse", 32}});
     CHECK(ccd::parse_broad_phase("sap").options.to_json() == nlohmann::json{{"swaps_per_endpoint", 2}});
     CHECK(ccd::parse_broad_phase("rtree").options.to_json() == nlohmann::json::object());
   }
