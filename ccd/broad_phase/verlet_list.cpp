@@ -9,8 +9,8 @@ namespace {
 constexpr std::uint32_t kMaxBackoff = 64;
 
 bool inside(const Aabb& box, const Aabb& fat) {
-  return (box.lo.x() >= fat.lo.x()) & (box.lo.y() >= fat.lo.y()) & (box.lo.z() >= fat.lo.z()) &
-         (box.hi.x() <= fat.hi.x()) & (box.hi.y() <= fat.hi.y()) & (box.hi.z() <= fat.hi.z());
+  return box.lo.x() >= fat.lo.x() && box.lo.y() >= fat.lo.y() && box.lo.z() >= fat.lo.z() &&
+         box.hi.x() <= fat.hi.x() && box.hi.y() <= fat.hi.y() && box.hi.z() <= fat.hi.z();
 }
 
 double largest_extent(const Aabb& b) { return (b.hi - b.lo).maxCoeff(); }
@@ -27,7 +27,7 @@ bool VerletList::serve(std::span<const Aabb> boxes, std::vector<BodyPair>& out, 
   if (anchor_.size() == n && anchor_frames_ < UINT32_MAX) ++anchor_frames_;
   if (!listed_) return false;
   bool all_inside = fat_.size() == n;  // a new body count (e.g. periodic images) cannot be served
-  for (std::size_t i = 0; all_inside && i < n; ++i) all_inside &= inside(boxes[i], fat_[i]);
+  for (std::size_t i = 0; all_inside && i < n; ++i) all_inside = inside(boxes[i], fat_[i]);
   if (!all_inside) {
     listed_ = false;
     if (served_ == 0) back_off();  // out at once: margins do not pay at this motion per frame
@@ -64,7 +64,7 @@ std::span<const Aabb> VerletList::fat_boxes(std::span<const Aabb> boxes) {
       const double per_frame = anchored ? face_motion(b, anchor_[i]) / frames : 0.0;
       double m = anchored ? std::min(reuse_ * per_frame, 0.25 * extent) : extent / 64.0;
       if (!(m >= 0.0) || !std::isfinite(m)) m = 0.0;
-      short_lived |= m < 2.0 * per_frame;
+      if (m < 2.0 * per_frame) short_lived = true;
       Aabb f{b.lo.array() - m, b.hi.array() + m};
       if (!f.lo.allFinite() || !f.hi.allFinite()) f = b;
       fat_[i] = f;
