@@ -74,7 +74,7 @@ class SweepAndPrune final : public BroadPhase {
   bool built_ = false;
   std::array<std::vector<Endpoint>, 3> endpoints_;  // per axis, sorted by (value, is_end)
   std::array<std::vector<double>, 3> bounds_;       // per axis: [2i] = lo_i, [2i + 1] = hi_i
-  UniformGrid grid_;                                // rebuild: fills the pair set
+  UniformGrid grid_{GridOptions{.reuse = 0}};       // rebuild: fills the pair set (a plain grid pass)
   std::vector<BodyPair> fill_;                      // rebuild: the grid's pairs
   std::vector<std::uint32_t> degree_;               // per body: its pairs in the set
   PairSet pairs_;
