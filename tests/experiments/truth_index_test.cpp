@@ -3,19 +3,24 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <map>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace experiments_truth_index_test {
 
 using ccd::ContactEvent;
 
-// The reference: every event of (a, b) as stored, by a scan of all events, sorted by enter.
-std::vector<std::uint32_t> scan(const std::vector<ContactEvent>& events, std::uint32_t a, std::uint32_t b) {
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t e = 0; e < events.size(); ++e)
-    if (events[e].a == a && events[e].b == b) out.push_back(e);
-  std::stable_sort(out.begin(), out.end(), [&](std::uint32_t x, std::uint32_t y) { return events[x].enter < events[y].enter; });
+// The reference: every event of each pair (a, b) as stored, from one scan of all events
+// into an ordered map (no hashing), each pair's sorted by enter.
+std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> scan(
+    const std::vector<ContactEvent>& events) {
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::uint32_t>> out;
+  for (std::uint32_t e = 0; e < events.size(); ++e) out[{events[e].a, events[e].b}].push_back(e);
+  for (auto& [pair, list] : out)
+    std::stable_sort(list.begin(), list.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return events[x].enter < events[y].enter; });
   return out;
 }
 
@@ -68,10 +73,12 @@ TEST_CASE("truth index agrees with a scan over many pairs, many events each", "[
     std::shuffle(events.begin(), events.end(), rng);
     const ccdlab::TruthIndex index(events);
     REQUIRE(index.events() == events);
+    const auto reference = scan(events);
     std::size_t found = 0;
     for (std::uint32_t a = 0; a < static_cast<std::uint32_t>(bodies) + 2; ++a)
       for (std::uint32_t b = 0; b < static_cast<std::uint32_t>(bodies) + 2; ++b) {
-        const std::vector<std::uint32_t> want = scan(events, a, b);
+        const auto it = reference.find({a, b});
+        const std::vector<std::uint32_t> want = it == reference.end() ? std::vector<std::uint32_t>{} : it->second;
         const std::vector<std::uint32_t> got = lookup(index, a, b);
         // Same events, each pair's by enter (ties in any order).
         REQUIRE(got.size() == want.size());
