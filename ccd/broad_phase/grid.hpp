@@ -46,7 +46,7 @@ struct GridOptions {
   static constexpr unsigned kThreads = 1;
   unsigned threads = kThreads;
   /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
-  static constexpr unsigned kReuse = 32;
+  static constexpr unsigned kReuse = detail::VerletList::kDefaultReuse;
   unsigned reuse = kReuse;
 };
 
@@ -67,7 +67,6 @@ class UniformGrid final : public BroadPhase {
   detail::CellGrid cells_;
   BroadPhaseStats stats_;
   detail::VerletList verlet_;
-  std::vector<BodyPair> found_;  // a rebuild's pairs on the grown boxes
   detail::CellHash hash_;      // the incremental update's grid
   bool hash_current_ = false;  // hash_ lists the boxes of the last call
   std::vector<std::uint32_t> seen_;   // per body: the last query that visited it

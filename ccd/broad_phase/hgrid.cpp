@@ -8,14 +8,8 @@
 namespace ccd {
 
 void HierarchicalGrid::find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {
-  std::uint64_t tests = 0;
-  if (verlet_.serve(boxes, out, tests)) {
-    stats_ = {};
-    stats_.box_tests = tests;
-    return;
-  }
-  find_all(verlet_.fat_boxes(boxes), found_);
-  stats_.box_tests += verlet_.adopt(boxes, found_, out);
+  verlet_.find_pairs(boxes, out, stats_,
+                     [this](std::span<const Aabb> fat, std::vector<BodyPair>& found) { find_all(fat, found); });
 }
 
 void HierarchicalGrid::find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out) {

@@ -24,7 +24,7 @@ namespace ccd {
 
 struct HgridOptions {
   /// Frames one pair list, found on grown boxes, is meant to serve (0: rebuild every frame).
-  static constexpr unsigned kReuse = 32;
+  static constexpr unsigned kReuse = detail::VerletList::kDefaultReuse;
   unsigned reuse = kReuse;
 };
 
@@ -40,7 +40,6 @@ class HierarchicalGrid final : public BroadPhase {
   void find_all(std::span<const Aabb> boxes, std::vector<BodyPair>& out);  // one rebuild's pass
 
   detail::VerletList verlet_;
-  std::vector<BodyPair> found_;  // a rebuild's pairs on the grown boxes
   std::vector<double> extent_;
   std::vector<std::uint8_t> halvings_;  // per body: h, then its engine level
   std::vector<double> cell_;            // non-empty levels, finest first

@@ -22,15 +22,19 @@ std::unique_ptr<BroadPhase> make_plain(const ParameterSet&) {
 
 constexpr double kMaxCount = 4294967295.0;  // fits every unsigned option
 
+// `grid`'s and `hgrid`'s Verlet list (ccd/broad_phase/verlet_list.hpp).
+constexpr ParameterSpec kReuseParameter{
+    "reuse", double(detail::VerletList::kDefaultReuse),
+    "frames one pair list, found on boxes grown by that much motion, serves while every box stays inside its grown box "
+    "(exact; 0 = rebuild every frame)",
+    ParameterKind::Integer, {0.0, 1024.0}, "frames"};
+
 constexpr ParameterSpec kGridParameters[] = {
     {"cell", GridOptions::kCellSize, "smallest cell size; 0 = the largest box extent (a smaller value is raised to it)",
      ParameterKind::Real, {0.0, 1e12}, "scene length"},
     {"threads", double(GridOptions::kThreads), "threads for one find_pairs call (same pairs, same order)",
      ParameterKind::Integer, {1.0, 256.0}, "threads"},
-    {"reuse", double(GridOptions::kReuse),
-     "frames one pair list, found on boxes grown by that much motion, serves while every box stays inside its grown box "
-     "(exact; 0 = rebuild every frame)",
-     ParameterKind::Integer, {0.0, 1024.0}, "frames"},
+    kReuseParameter,
 };
 std::unique_ptr<BroadPhase> make_grid(const ParameterSet& p) {
   GridOptions o;
@@ -40,12 +44,7 @@ std::unique_ptr<BroadPhase> make_grid(const ParameterSet& p) {
   return std::make_unique<UniformGrid>(o);
 }
 
-constexpr ParameterSpec kHgridParameters[] = {
-    {"reuse", double(HgridOptions::kReuse),
-     "frames one pair list, found on grown boxes, serves while every box stays inside its grown box (exact; 0 = "
-     "rebuild every frame)",
-     ParameterKind::Integer, {0.0, 1024.0}, "frames"},
-};
+constexpr ParameterSpec kHgridParameters[] = {kReuseParameter};
 std::unique_ptr<BroadPhase> make_hgrid(const ParameterSet& p) {
   HgridOptions o;
   o.reuse = static_cast<unsigned>(p.integer("reuse"));

@@ -31,25 +31,40 @@ namespace ccd::detail {
 
 class VerletList {
  public:
+  /// The default `reuse` of `grid` and `hgrid`.
+  static constexpr unsigned kDefaultReuse = 32;
   /// `reuse` frames a list is meant to serve (0: off, every frame rebuilds).
   explicit VerletList(unsigned reuse) : reuse_(reuse) {}
 
+  /// One frame of a rebuilding broad phase: served from the list, or `rebuild(boxes, pairs)`
+  /// (the method's own pass, which sets `stats` with rebuilt = true) run on the grown boxes
+  /// and adopted. Writes the overlapping pairs into `out` (cleared first).
+  template <class Rebuild>
+  void find_pairs(std::span<const Aabb> boxes, std::vector<BodyPair>& out, BroadPhaseStats& stats,
+                  Rebuild&& rebuild) {
+    std::uint64_t tests = 0;
+    if (serve(boxes, out, tests)) {
+      stats = {};
+      stats.box_tests = tests;
+      return;
+    }
+    rebuild(fat_boxes(boxes), found_);
+    stats.box_tests += adopt(boxes, found_, out);
+  }
+
+ private:
   /// Serves the frame from the list when every box is inside its fat box: writes the
   /// overlapping listed pairs into `out` (cleared first), sets `box_tests`, returns true.
-  /// False: the caller rebuilds (fat_boxes(), then adopt()).
+  /// False: find_pairs rebuilds (fat_boxes(), then adopt()).
   bool serve(std::span<const Aabb> boxes, std::vector<BodyPair>& out, std::uint64_t& box_tests);
-  /// The boxes the caller builds on: `boxes` grown by their margins, or `boxes` itself when
+  /// The boxes a rebuild runs on: `boxes` grown by their margins, or `boxes` itself when
   /// the list is off or backing off.
   std::span<const Aabb> fat_boxes(std::span<const Aabb> boxes);
-  /// Takes the pairs the caller found on fat_boxes() (`found`, consumed) as the new list
+  /// Takes the pairs the rebuild found on fat_boxes() (`found`, consumed) as the new list
   /// and writes those whose `boxes` overlap into `out` (cleared first); returns the box
   /// tests spent. When fat_boxes() returned `boxes` itself, `found` is already the answer:
   /// it is swapped into `out` and nothing is kept.
   std::uint64_t adopt(std::span<const Aabb> boxes, std::vector<BodyPair>& found, std::vector<BodyPair>& out);
-  /// Forgets the list (the next serve() fails).
-  void clear() { listed_ = false; }
-
- private:
   void back_off();  // plain rebuilds for the next backoff period, doubling it
 
   unsigned reuse_;
@@ -62,6 +77,7 @@ class VerletList {
   std::vector<Aabb> anchor_;  // per body, its box at the last rebuild
   std::uint32_t anchor_frames_ = 0;  // frames from the anchor to now (0: no anchor)
   std::vector<BodyPair> list_;
+  std::vector<BodyPair> found_;  // a rebuild's pairs on the grown boxes
 };
 
 }  // namespace ccd::detail
